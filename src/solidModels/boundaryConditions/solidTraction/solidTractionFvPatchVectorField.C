@@ -1,0 +1,186 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "solidTractionFvPatchVectorField.H"
+#include "addToRunTimeSelectionTable.H"
+#include "volFields.H"
+#include "mechanicalModel.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
+(
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF
+)
+:
+    fixedGradientFvPatchVectorField(p, iF),
+    traction_(),
+    pressure_()
+{
+    gradient() = Zero;
+}
+
+
+Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
+(
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF,
+    const dictionary& dict
+)
+:
+    fixedGradientFvPatchVectorField(p, iF),
+    traction_(Function1<vector>::New("traction", dict)),
+    pressure_
+    (
+        dict.found("pressure")
+      ? Function1<scalar>::New("pressure", dict)
+      : autoPtr<Function1<scalar>>()
+    )
+{
+    if (dict.found("value"))
+    {
+        fvPatchVectorField::operator=(vectorField("value", dict, p.size()));
+    }
+    else
+    {
+        fvPatchVectorField::operator=(patchInternalField());
+    }
+    gradient() = Zero;
+}
+
+
+Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
+(
+    const solidTractionFvPatchVectorField& ptf,
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF,
+    const fvPatchFieldMapper& mapper
+)
+:
+    fixedGradientFvPatchVectorField(ptf, p, iF, mapper),
+    traction_(ptf.traction_.clone()),
+    pressure_(ptf.pressure_.clone())
+{}
+
+
+Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
+(
+    const solidTractionFvPatchVectorField& ptf
+)
+:
+    fixedGradientFvPatchVectorField(ptf),
+    traction_(ptf.traction_.clone()),
+    pressure_(ptf.pressure_.clone())
+{}
+
+
+Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
+(
+    const solidTractionFvPatchVectorField& ptf,
+    const DimensionedField<vector, volMesh>& iF
+)
+:
+    fixedGradientFvPatchVectorField(ptf, iF),
+    traction_(ptf.traction_.clone()),
+    pressure_(ptf.pressure_.clone())
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::scalarField>
+Foam::solidTractionFvPatchVectorField::patchImpK() const
+{
+    const fvMesh& mesh = patch().boundaryMesh().mesh();
+    return mechanicalModel::New(mesh).law().impK(patch().index());
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::solidTractionFvPatchVectorField::explicitNormalTraction() const
+{
+    const fvMesh& mesh = patch().boundaryMesh().mesh();
+
+    // A silent zero here would turn every traction condition into a
+    // wrong one, so a solver that does not register the fields is an error
+    if
+    (
+        !mesh.foundObject<volTensorField>("gradD")
+     || !mesh.foundObject<volSymmTensorField>("sigma")
+    )
+    {
+        FatalErrorInFunction
+            << "Patch " << patch().name() << " of type " << type()
+            << " needs the registered fields 'gradD' and 'sigma'"
+            << " (volTensorField, volSymmTensorField);"
+            << " use it with solidContactFoam" << exit(FatalError);
+    }
+
+    const fvPatchTensorField& gradD =
+        patch().lookupPatchField<volTensorField, tensor>("gradD");
+    const fvPatchSymmTensorField& sigma =
+        patch().lookupPatchField<volSymmTensorField, symmTensor>("sigma");
+
+    const vectorField n(patch().nf());
+    return (n & sigma) - patchImpK()*(n & gradD);
+}
+
+
+void Foam::solidTractionFvPatchVectorField::setTraction(const vectorField& t)
+{
+    gradient() = (t - explicitNormalTraction())/patchImpK();
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::solidTractionFvPatchVectorField::prescribedTraction() const
+{
+    const scalar t = db().time().timeOutputValue();
+
+    tmp<vectorField> ttr(new vectorField(patch().size(), traction_->value(t)));
+
+    if (pressure_.valid())
+    {
+        ttr.ref() -= pressure_->value(t)*patch().nf();
+    }
+    return ttr;
+}
+
+
+void Foam::solidTractionFvPatchVectorField::updateCoeffs()
+{
+    if (updated())
+    {
+        return;
+    }
+
+    setTraction(prescribedTraction());
+
+    fixedGradientFvPatchVectorField::updateCoeffs();
+}
+
+
+void Foam::solidTractionFvPatchVectorField::write(Ostream& os) const
+{
+    fvPatchVectorField::write(os);
+    traction_->writeData(os);
+    if (pressure_.valid())
+    {
+        pressure_->writeData(os);
+    }
+    writeEntry("value", os);
+}
+
+
+// * * * * * * * * * * * * * * Build Macros  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    makePatchTypeField
+    (
+        fvPatchVectorField,
+        solidTractionFvPatchVectorField
+    );
+}

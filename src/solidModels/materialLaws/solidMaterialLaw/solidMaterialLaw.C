@@ -1,0 +1,24 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "solidMaterialLaw.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(solidMaterialLaw, 0);
+    defineRunTimeSelectionTable(solidMaterialLaw, dictionary);
+}
+
+
+Foam::solidMaterialLaw::solidMaterialLaw
+(
+    const word& lawType,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    mesh_(mesh),
+    dict_(dict),
+    coeffs_(dict.subDict(lawType + "Coeffs"))
+{}
