@@ -1,0 +1,39 @@
+# contact4foam: the README's commands.
+#   make run    install what is missing, build, run the default tutorial
+#   make test   install what is missing, build, run all tests
+#   make bench  run the benchmarks
+#   make clean  remove all build output (distclean: also the OpenFOAM kit)
+
+SHELL  := /bin/bash
+PREFIX ?= $(or $(C4F_PREFIX),$(HOME)/.contact4foam)
+ENV    := source etc/bashrc
+PY     := /usr/bin/python3
+DEFAULT_TUTORIAL := tutorials/plateHole
+
+.PHONY: all bootstrap build run test bench clean distclean shellcheck
+
+all: build
+
+bootstrap:
+	@bin/bootstrap
+
+build: bootstrap
+	@$(ENV) && ./Allwmake
+
+run: build
+	@$(ENV) && $(DEFAULT_TUTORIAL)/Allclean >/dev/null && $(DEFAULT_TUTORIAL)/Allrun
+
+test: build
+	@$(ENV) && $(PY) tests/run.py
+
+bench: build
+	@$(ENV) && $(PY) tests/bench/run.py
+
+clean:
+	@./Allclean
+
+distclean: clean
+	rm -rf "$(PREFIX)"
+
+shellcheck:
+	shellcheck -x bin/bootstrap Allwmake Allclean .ci/run tutorials/*/Allrun tutorials/*/Allclean

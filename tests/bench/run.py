@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""contact4foam benchmarks (`make bench`). Prints ratios measured side by
+side in this one run; nothing here is asserted.
+
+plateHole refinement: the Kirsch error at the hole and the whole-field L2
+error for four meshes (each level halves the cell size), the observed
+order between levels, the correctors and the wall time per level, and
+the serial/parallel wall-time ratio on the finest mesh.
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "src/postProcessing/python"))
+sys.path.insert(0, os.path.join(ROOT, "tutorials/plateHole/validation"))
+
+import numpy as np  # noqa: E402
+from c4fpost import foamio, kirsch  # noqa: E402
+
+PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
+WORK = os.path.join(PREFIX, "run", "bench")
+
+
+def sh(cmd, cwd):
+    p = subprocess.run(cmd, cwd=cwd, shell=True, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    if p.returncode:
+        sys.exit("bench: '%s' failed in %s\n%s" % (cmd, cwd, p.stdout[-2000:]))
+    return p.stdout
+
+
+def plate_case(n, parallel=False):
+    case = os.path.join(WORK, "plateHole_%d%s" % (n, "_par" if parallel else ""))
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(os.path.join(ROOT, "tutorials/plateHole"), case,
+                    ignore=shutil.ignore_patterns("[1-9]*", "processor*", "log.*", "VTK", "*.png"))
+    bmd = os.path.join(case, "system/blockMeshDict")
+    text = open(bmd).read()
+    text = re.sub(r"^nRadial\s+\d+;", "nRadial %d;" % n, text, flags=re.M)
+    text = re.sub(r"^nArc\s+\d+;", "nArc %d;" % (2 * n // 3), text, flags=re.M)
+    open(bmd, "w").write(text)
+    sh("blockMesh", case)
+    if parallel:
+        sh("decomposePar", case)
+        t0 = time.time()
+        log = sh("mpirun -np 2 solidContactFoam -parallel", case)
+        wall = time.time() - t0
+        sh("reconstructPar -latestTime", case)
+    else:
+        t0 = time.time()
+        log = sh("solidContactFoam", case)
+        wall = time.time() - t0
+    ncorr = int(re.findall(r"correctors = (\d+)", log)[-1])
+    t = foamio.latest_time(case)
+    C = foamio.read_internal(os.path.join(case, t, "C"))
+    s = foamio.read_internal(os.path.join(case, t, "sigma"))
+    cells = foamio.patch_face_cells(case, "left")
+    ref, _, _ = kirsch.stress_xy(C[:, 0], C[:, 1], 1e6, 0.1)
+    e_hole = np.abs(s[cells, 0] - ref[cells]).max() / 3e6
+    e_l2 = np.sqrt(np.mean((s[:, 0] - ref) ** 2)) / 1e6
+    return dict(n=n, cells=len(C), wall=wall, ncorr=ncorr, e_hole=e_hole, e_l2=e_l2)
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    print("plateHole refinement (Kirsch), serial")
+    print("%8s %8s %12s %12s %8s %10s %10s" % ("nRadial", "cells", "err@hole/3T", "L2/T", "order", "correctors", "wall [s]"))
+    rows = [plate_case(n) for n in (15, 30, 60, 120)]
+    prev = None
+    for r in rows:
+        order = "" if prev is None else "%.2f" % (np.log(prev["e_hole"] / r["e_hole"]) / np.log(2))
+        print("%8d %8d %12.4g %12.4g %8s %10d %10.2f" % (r["n"], r["cells"], r["e_hole"], r["e_l2"], order, r["ncorr"], r["wall"]))
+        prev = r
+    par = plate_case(rows[-1]["n"], parallel=True)
+    print("\nfinest mesh, 2 MPI ranks: wall %.2f s, correctors %d; serial/parallel wall ratio %.2f"
+          % (par["wall"], par["ncorr"], rows[-1]["wall"] / par["wall"]))
+    print("(times include solver start-up; %d cores on this machine)" % os.cpu_count())
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,95 @@
+"""Bad-input cases: each edits a copy of a tutorial, runs the solver, and
+must see it stop with a FatalIOError that names the file, the entry and
+what is valid, with no crash and no time directory written."""
+import os
+import re
+import shutil
+
+CRASH_MARKERS = ("sigSegv", "Segmentation fault", "sigFpe", "Aborted", "core dumped")
+
+
+def _edit(case, relpath, pattern, repl, count=1):
+    path = os.path.join(case, relpath)
+    text = open(path).read()
+    new, n = re.subn(pattern, repl, text, count=count, flags=re.M)
+    if n == 0:
+        raise RuntimeError("edit %r not applied to %s" % (pattern, path))
+    with open(path, "w") as f:
+        f.write(new)
+
+
+MP = "constant/mechanicalProperties"
+
+# name, tutorial, [(file, pattern, replacement)], expected texts in the output
+CASES = [
+    ("unknownMaterialLaw", "plateHole",
+     [(MP, r"^materialLaw\s+linearElastic;", "materialLaw     linearElastik;")],
+     ["FOAM FATAL IO ERROR", "Unknown materialLaw linearElastik",
+      "Valid materialLaw types", "linearElastic", "mechanicalProperties"]),
+    ("missingCoeffsDict", "plateHole",
+     [(MP, r"^linearElasticCoeffs", "someOtherCoeffs")],
+     ["FOAM FATAL IO ERROR", "linearElasticCoeffs", "mechanicalProperties"]),
+    ("missingE", "plateHole",
+     [(MP, r"^\s*E\s+70e9;\n", "")],
+     ["FOAM FATAL IO ERROR", "'E'", "linearElasticCoeffs"]),
+    ("negativeE", "plateHole",
+     [(MP, r"^(\s*)E\s+70e9;", r"\1E -70e9;")],
+     ["FOAM FATAL IO ERROR", "Entry 'E' = -70000000000", "E > 0", "linearElasticCoeffs"]),
+    ("nuAtHalf", "plateHole",
+     [(MP, r"^(\s*)nu\s+0\.33;", r"\1nu 0.5;")],
+     ["FOAM FATAL IO ERROR", "Entry 'nu' = 0.5", "(-1, 0.5)", "linearElasticCoeffs"]),
+    ("nuBelowMinusOne", "plateHole",
+     [(MP, r"^(\s*)nu\s+0\.33;", r"\1nu -1.5;")],
+     ["FOAM FATAL IO ERROR", "Entry 'nu' = -1.5", "(-1, 0.5)", "linearElasticCoeffs"]),
+    ("planeStressOn3DMesh", "plateHole",
+     [("system/blockMeshDict", r"(frontAndBack\s*\{\s*type\s+)empty;", r"\1patch;"),
+      ("0/D", r"(frontAndBack\s*\{\s*type\s+)empty;",
+       r"\1solidTraction; traction constant (0 0 0); value uniform (0 0 0);")],
+     ["FOAM FATAL IO ERROR", "planeStress", "2D mesh", "linearElasticCoeffs"]),
+    ("zeroCorrectors", "plateHole",
+     [("system/fvSolution", r"^(\s*)nCorrectors\s+\d+;", r"\1nCorrectors 0;")],
+     ["FOAM FATAL IO ERROR", "Entry 'nCorrectors' = 0", ">= 1", "fvSolution"]),
+    ("negativeTolerance", "plateHole",
+     [("system/fvSolution", r"^(\s*)tolerance\s+1e-9;", r"\1tolerance -1;")],
+     ["FOAM FATAL IO ERROR", "Entry 'tolerance' = -1", "> 0", "fvSolution"]),
+    ("missingTraction", "plateHole",
+     [("0/D", r"(right\s*\{[^}]*?)\btraction\s[^;]*;", r"\1")],
+     ["FOAM FATAL IO ERROR", "traction", "right"]),
+]
+
+
+def run_one(res, root, work, run, name, tutorial, edits, expected):
+    case = os.path.join(work, "badInput", name)
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(os.path.join(root, "tutorials", tutorial), case,
+                    ignore=shutil.ignore_patterns("[1-9]*", "processor*", "log.*", "VTK", "*.png"))
+    try:
+        for f, pat, rep in edits:
+            _edit(case, f, pat, rep)
+    except RuntimeError as e:
+        res.add("badInput/" + name, False, note=str(e))
+        return
+    rc, out = run(["blockMesh"], cwd=case, log=os.path.join(case, "log.blockMesh"))
+    if rc != 0:
+        res.add("badInput/" + name, False, note="blockMesh failed")
+        return
+    rc, out = run(["solidContactFoam"], cwd=case, log=os.path.join(case, "log.solidContactFoam"))
+    missing = [e for e in expected if e not in out]
+    crashed = [m for m in CRASH_MARKERS if m in out]
+    wrote = [d for d in os.listdir(case) if re.fullmatch(r"[1-9][0-9.e+-]*", d)]
+    ok = rc != 0 and not missing and not crashed and not wrote
+    note = "(rc=%d)" % rc
+    if missing:
+        note += " missing in output: %s" % missing
+    if crashed:
+        note += " crashed: %s" % crashed
+    if wrote:
+        note += " wrote time directories: %s" % wrote
+    if rc == 0:
+        note += " solver did not stop"
+    res.add("badInput/" + name, ok, note=note)
+
+
+def run_all(res, root, work, run):
+    for name, tutorial, edits, expected in CASES:
+        run_one(res, root, work, run, name, tutorial, edits, expected)

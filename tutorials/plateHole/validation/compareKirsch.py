@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""plateHole: compare sigma_xx along the symmetry line x = 0 with Kirsch.
+
+The checks, their tolerances and where the tolerances come from live here,
+once: the tutorial prints them, the regression runner (tests/run.py) reads
+them with --json.
+
+Tolerance on max |sigma_xx - Kirsch| / (3T) along the line:
+    0.5 h1/R + 0.01
+  - h1 is the radial size of the first cell at the hole. The stress is
+    sampled at cell centres and its error at the hole falls linearly with
+    h1 (measured: 7.2 %, 3.6 %, 2.4 % of the peak for h1/R = 0.16, 0.082,
+    0.041), so the slope 0.5 bounds the discretisation part with margin.
+  - 0.01 bounds the finite-plate error: Kirsch is for an infinite plate;
+    a plate of width 12R concentrates to 3.014T (Peterson's finite-width
+    factor) and the free top edge adds about 0.8 % of 3T away from the
+    hole, which is what the mesh-converged error tends to.
+"""
+import argparse
+import json
+import os
+import sys
+
+# In the repository the package is three levels up; a copied case finds it
+# through $C4F_ROOT, which etc/bashrc exports
+for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
+           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
+    if os.path.isdir(os.path.join(_p, "c4fpost")):
+        sys.path.insert(0, _p)
+        break
+from c4fpost import foamio, kirsch  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+T = 1e6     # applied traction [Pa], 0/D
+R = 0.1     # hole radius [m], system/blockMeshDict
+
+
+def compare(case):
+    time = foamio.latest_time(case)
+    C = foamio.read_internal(os.path.join(case, time, "C"))
+    sigma = foamio.read_internal(os.path.join(case, time, "sigma"))
+    cells = foamio.patch_face_cells(case, "left")
+    order = np.argsort(C[cells, 1])
+    cells = cells[order]
+    x, y = C[cells, 0], C[cells, 1]
+    num = sigma[cells, 0]
+    ref, _, _ = kirsch.stress_xy(x, y, T, R)
+    err = np.abs(num - ref) / (3 * T)
+    h1 = 2 * (y.min() - R)
+    tol = 0.5 * h1 / R + 0.01
+    szz = np.abs(sigma[:, 5]).max() / T
+    checks = [
+        dict(name="plateHole/sxx_symmetry_line_max_error", value=float(err.max()),
+             reference=0.0, error=float(err.max()), tolerance=float(tol),
+             units="fraction of 3T"),
+        dict(name="plateHole/peak_sxx_first_cell", value=float(num[0]),
+             reference=float(ref[0]), error=float(abs(num[0] - ref[0]) / ref[0]),
+             tolerance=float(tol * 3 * T / ref[0]), units="Pa"),
+        dict(name="plateHole/plane_stress_szz", value=float(szz), reference=0.0,
+             error=float(szz), tolerance=1e-12, units="fraction of T"),
+    ]
+    for c in checks:
+        c["passed"] = bool(c["error"] <= c["tolerance"])
+    return dict(time=time, y=y.tolist(), sxx=num.tolist(), kirsch=ref.tolist(),
+                h1=float(h1), checks=checks)
+
+
+def plot(result, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    y = np.array(result["y"])
+    yy = np.linspace(R, y.max(), 400)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(yy / R, kirsch.sxx_symmetry_line(yy, T, R) / T, "k-", label="Kirsch (infinite plate)")
+    ax.plot(y / R, np.array(result["sxx"]) / T, "o", ms=4, label="solidContactFoam (cell centres)")
+    ax.set_xlabel("y / R on x = 0")
+    ax.set_ylabel(r"$\sigma_{xx}$ / T")
+    ax.set_title("plateHole: stress concentration at the hole")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("case", nargs="?", default=".")
+    ap.add_argument("--json", help="write the checks to this file")
+    ap.add_argument("--png", default="plateHole.png")
+    args = ap.parse_args()
+    res = compare(args.case)
+    print("plateHole: sigma_xx on x = 0 against Kirsch (time %s, h1/R = %.4f)"
+          % (res["time"], res["h1"] / R))
+    print("%10s %14s %14s %10s" % ("y/R", "sxx [Pa]", "Kirsch [Pa]", "err/3T"))
+    for yi, n, k in list(zip(res["y"], res["sxx"], res["kirsch"]))[::3]:
+        print("%10.4f %14.6g %14.6g %10.4f" % (yi / R, n, k, abs(n - k) / (3 * T)))
+    for c in res["checks"]:
+        print("%s %-45s value=%-12.6g ref=%-12.6g err=%-10.4g tol=%.4g"
+              % ("PASS" if c["passed"] else "FAIL", c["name"], c["value"],
+                 c["reference"], c["error"], c["tolerance"]))
+    if args.png:
+        plot(res, os.path.join(args.case, args.png))
+        print("plot: %s" % os.path.join(args.case, args.png))
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(res["checks"], f, indent=1)
+
+
+if __name__ == "__main__":
+    main()
