@@ -1,0 +1,84 @@
+// Unit tests of the penalty and Lagrange-multiplier normal laws,
+// src/kernels/contact/normalContactLaws.
+
+#include "normalContactLaws.H"
+
+#include <gtest/gtest.h>
+#include <cmath>
+#include <limits>
+
+using namespace c4f::contact;
+
+TEST(penaltyLaw, pressureIsPenaltyTimesPenetration)
+{
+    const double eps = 2e12;
+    EXPECT_DOUBLE_EQ(penaltyPressure(-1e-6, eps).pressure, 2e6);
+    EXPECT_DOUBLE_EQ(penaltyPressure(1e-6, eps).pressure, 0.0);
+    EXPECT_DOUBLE_EQ(penaltyPressure(0.0, eps).pressure, 0.0);
+}
+
+TEST(penaltyLaw, derivativeMatchesCentralDifferencesAwayFromZero)
+{
+    const double eps = 3.7e9, h = 1e-9;
+    for (const double g : {-1e-3, -1e-5, 1e-5, 1e-3})
+    {
+        const double fd =
+            (penaltyPressure(g + h, eps).pressure - penaltyPressure(g - h, eps).pressure)/(2*h);
+        EXPECT_NEAR(penaltyPressure(g, eps).dPressureDGap, fd, 1e-6*eps);
+    }
+}
+
+TEST(penaltyLaw, stiffnessScaledDefault)
+{
+    // s K / h with K = 2mu + lambda of steel and h = 1 mm
+    EXPECT_NEAR(stiffnessScaledPenalty(5.0, 2.69e11, 1e-3), 1.345e15, 1e3);
+}
+
+TEST(penaltyLaw, robinFractionReproducesSeriesSprings)
+{
+    // Face between a cell (conductance K/delta) and a target (eps): the
+    // face value D_f = f Dt + (1 - f) Dc must balance the two fluxes
+    const double K = 2e11, delta = 5e-3, eps = 7e13, Dc = 1e-4, Dt = -3e-5;
+    const double f = robinValueFraction(eps, K, delta);
+    const double Df = f*Dt + (1 - f)*Dc;
+    EXPECT_NEAR(K*(Df - Dc)/delta, eps*(Dt - Df), 1e-9*eps*std::abs(Dt - Dc));
+    EXPECT_DOUBLE_EQ(robinValueFraction(K/delta, K, delta), 0.5);
+    EXPECT_DOUBLE_EQ(robinValueFraction(0.0, K, delta), 0.0);
+    EXPECT_DOUBLE_EQ
+    (
+        robinValueFraction(std::numeric_limits<double>::infinity(), K, delta),
+        1.0
+    );
+}
+
+TEST(penaltyLaw, validation)
+{
+    EXPECT_TRUE(validPenalty(1.0));
+    EXPECT_FALSE(validPenalty(0.0));
+    EXPECT_FALSE(validPenalty(-1.0));
+    EXPECT_FALSE(validPenalty(std::numeric_limits<double>::quiet_NaN()));
+    EXPECT_FALSE(validPenalty(std::numeric_limits<double>::infinity()));
+}
+
+TEST(lagrangeMultiplier, primalDualRule)
+{
+    const double c = 1e14;
+    EXPECT_TRUE(activeByPrimalDual(1e6, 0.0, c));     // pressed, closed
+    EXPECT_TRUE(activeByPrimalDual(0.0, -1e-9, c));   // penetrating
+    EXPECT_FALSE(activeByPrimalDual(0.0, 1e-9, c));   // open, no pressure
+    EXPECT_FALSE(activeByPrimalDual(-1e3, 0.0, c));   // tensile: release
+    // The two terms compete: pressure 1e6 against a gap of 1e-7 (c g = 1e7)
+    EXPECT_FALSE(activeByPrimalDual(1e6, 1e-7, c));
+}
+
+TEST(lagrangeMultiplier, activeSetUpdateCountsChanges)
+{
+    std::vector<double> lambda{1e6, 0.0, -1.0, 0.0};
+    std::vector<double> gap{0.0, -1e-9, 0.0, 1e-6};
+    std::vector<char> active{0, 1, 1, 0};
+    EXPECT_EQ(updateActiveSet(lambda, gap, 1e12, active), 2);
+    EXPECT_EQ(active, (std::vector<char>{1, 1, 0, 0}));
+    EXPECT_EQ(updateActiveSet(lambda, gap, 1e12, active), 0);
+    std::vector<char> wrong(3, 0);
+    EXPECT_THROW(updateActiveSet(lambda, gap, 1e12, wrong), std::invalid_argument);
+}
