@@ -6,15 +6,17 @@ once: the tutorial prints them, the regression runner (tests/run.py) reads
 them with --json.
 
 Tolerance on max |sigma_xx - Kirsch| / (3T) along the line:
-    0.5 h1/R + 0.01
+    0.5 h1/R + 0.025
+  - 0.025 bounds the mesh-converged error, which is the finite plate's
+    departure from Kirsch's infinite one (plate 12R x 12R, uniform traction
+    on the right edge, free top edge). `make bench` measured it levelling
+    off at 2.06 % of 3T on 19200 cells (h1/R = 0.02).
   - h1 is the radial size of the first cell at the hole. The stress is
-    sampled at cell centres and its error at the hole falls linearly with
-    h1 (measured: 7.2 %, 3.6 %, 2.4 % of the peak for h1/R = 0.16, 0.082,
-    0.041), so the slope 0.5 bounds the discretisation part with margin.
-  - 0.01 bounds the finite-plate error: Kirsch is for an infinite plate;
-    a plate of width 12R concentrates to 3.014T (Peterson's finite-width
-    factor) and the free top edge adds about 0.8 % of 3T away from the
-    hole, which is what the mesh-converged error tends to.
+    sampled at cell centres; above the floor the error falls about
+    linearly with h1 (measured 7.2 %, 3.6 %, 2.4 %, 2.1 % of the peak for
+    h1/R = 0.16, 0.082, 0.041, 0.02), i.e. a slope of 0.2-0.35 above the
+    floor, which 0.5 bounds with margin.
+  The default mesh (h1/R = 0.082) measures 3.6 % against 6.6 %.
 """
 import argparse
 import json
@@ -48,7 +50,7 @@ def compare(case):
     ref, _, _ = kirsch.stress_xy(x, y, T, R)
     err = np.abs(num - ref) / (3 * T)
     h1 = 2 * (y.min() - R)
-    tol = 0.5 * h1 / R + 0.01
+    tol = 0.5 * h1 / R + 0.025
     szz = np.abs(sigma[:, 5]).max() / T
     checks = [
         dict(name="plateHole/sxx_symmetry_line_max_error", value=float(err.max()),
