@@ -149,6 +149,27 @@ def decomposed(res, case, name, nprocs):
     res.add(name, ok, note="(ran on %d processors)" % nprocs if ok else "not decomposed")
 
 
+def uniaxial_bar(res):
+    """Bar of length L = 1 m, nu = 0, end displacement ramped to 1 mm at
+    t = 2 by OpenFOAM's uniformFixedValue: sigma_xx = E delta(t)/L in every
+    cell at every step (uniform strain is exact for this discretisation, so
+    the tolerance is the outer-corrector tolerance 1e-9 with margin)."""
+    case = os.path.join(WORK, "uniaxialBar")
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(os.path.join(ROOT, "tests/regression/cases/uniaxialBar"), case)
+    rc1, _ = run(["blockMesh"], cwd=case, log=os.path.join(case, "log.blockMesh"))
+    rc2, out = run(["solidContactFoam"], cwd=case, log=os.path.join(case, "log.solidContactFoam"))
+    if rc1 or rc2:
+        res.add("uniaxialBar/run", False, note="failed, see %s" % case)
+        return
+    E = 2e11
+    for t, delta in (("1", 0.5e-3), ("2", 1e-3)):
+        sxx = foamio.read_internal(os.path.join(case, t, "sigma"))[:, 0]
+        ref = E * delta / 1.0
+        err = float(np.abs(sxx - ref).max() / ref)
+        res.add("uniaxialBar/sxx_step_%s" % t, err <= 1e-6, float(sxx.mean()), ref, err, 1e-6)
+
+
 # --------------------------------------------------------------------------
 def main():
     ap = argparse.ArgumentParser(description="contact4foam tests")
@@ -182,6 +203,10 @@ def main():
             # an error of that order, so they agree to about 1e-7 of D.
             serial_parallel_agree(res, serial, par,
                                   "plateHoleParallel/D_equals_serial", 1e-6)
+
+    if want("uniaxialBar"):
+        print("== uniaxialBar: load steps from a uniformFixedValue table", flush=True)
+        uniaxial_bar(res)
 
     if want("badInput"):
         print("== bad input: each must stop with a clear FatalIOError", flush=True)
