@@ -7,6 +7,8 @@
 SHELL  := /bin/bash
 PREFIX ?= $(or $(C4F_PREFIX),$(HOME)/.contact4foam)
 ENV    := source etc/bashrc
+# The clone this make runs in, not the one that last ran bin/bootstrap
+export C4F_ROOT := $(CURDIR)
 PY     := /usr/bin/python3
 DEFAULT_TUTORIAL := tutorials/plateHole
 

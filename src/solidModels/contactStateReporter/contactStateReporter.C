@@ -17,8 +17,13 @@ Foam::string Foam::contactStateReporter::summary(const volVectorField& D)
 
         if (rep)
         {
-            s += "  [" + D.mesh().boundary()[patchi].name() + ": "
-               + rep->contactState() + "]";
+            // A master patch of a contact pair has nothing of its own
+            const string state(rep->contactState());
+            if (!state.empty())
+            {
+                s += "  [" + D.mesh().boundary()[patchi].name() + ": "
+                   + state + "]";
+            }
         }
     }
     return s;

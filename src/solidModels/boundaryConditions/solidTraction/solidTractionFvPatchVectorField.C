@@ -5,7 +5,7 @@
 #include "solidTractionFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
-#include "mechanicalModel.H"
+#include "solidPatchTractions.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -93,38 +93,14 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
 Foam::tmp<Foam::scalarField>
 Foam::solidTractionFvPatchVectorField::patchImpK() const
 {
-    const fvMesh& mesh = patch().boundaryMesh().mesh();
-    return mechanicalModel::New(mesh).law().impK(patch().index());
+    return solidPatchTractions::impK(patch());
 }
 
 
 Foam::tmp<Foam::vectorField>
 Foam::solidTractionFvPatchVectorField::explicitNormalTraction() const
 {
-    const fvMesh& mesh = patch().boundaryMesh().mesh();
-
-    // A silent zero here would turn every traction condition into a
-    // wrong one, so a solver that does not register the fields is an error
-    if
-    (
-        !mesh.foundObject<volTensorField>("gradD")
-     || !mesh.foundObject<volSymmTensorField>("sigma")
-    )
-    {
-        FatalErrorInFunction
-            << "Patch " << patch().name() << " of type " << type()
-            << " needs the registered fields 'gradD' and 'sigma'"
-            << " (volTensorField, volSymmTensorField);"
-            << " use it with solidContactFoam" << exit(FatalError);
-    }
-
-    const fvPatchTensorField& gradD =
-        patch().lookupPatchField<volTensorField, tensor>("gradD");
-    const fvPatchSymmTensorField& sigma =
-        patch().lookupPatchField<volSymmTensorField, symmTensor>("sigma");
-
-    const vectorField n(patch().nf());
-    return (n & sigma) - patchImpK()*(n & gradD);
+    return solidPatchTractions::explicitNormalTraction(patch());
 }
 
 

@@ -1,0 +1,64 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "solidPatchTractions.H"
+#include "volFields.H"
+#include "mechanicalModel.H"
+
+namespace
+{
+
+void checkSolverFields(const Foam::fvPatch& patch)
+{
+    using namespace Foam;
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+
+    // A silent zero here would turn every traction condition into a
+    // wrong one, so a solver that does not register the fields is an error
+    if
+    (
+        !mesh.foundObject<volTensorField>("gradD")
+     || !mesh.foundObject<volSymmTensorField>("sigma")
+    )
+    {
+        FatalErrorInFunction
+            << "Patch " << patch.name()
+            << " needs the registered fields 'gradD' and 'sigma'"
+            << " (volTensorField, volSymmTensorField);"
+            << " use it with solidContactFoam" << exit(FatalError);
+    }
+}
+
+} // End anonymous namespace
+
+
+Foam::tmp<Foam::scalarField>
+Foam::solidPatchTractions::impK(const fvPatch& patch)
+{
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+    return mechanicalModel::New(mesh).law().impK(patch.index());
+}
+
+
+const Foam::fvPatchField<Foam::symmTensor>&
+Foam::solidPatchTractions::sigma(const fvPatch& patch)
+{
+    checkSolverFields(patch);
+    return patch.lookupPatchField<volSymmTensorField, symmTensor>("sigma");
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::solidPatchTractions::explicitNormalTraction(const fvPatch& patch)
+{
+    checkSolverFields(patch);
+
+    const fvPatchTensorField& gradD =
+        patch.lookupPatchField<volTensorField, tensor>("gradD");
+    const fvPatchSymmTensorField& sigma =
+        patch.lookupPatchField<volSymmTensorField, symmTensor>("sigma");
+
+    const vectorField n(patch.nf());
+    return (n & sigma) - impK(patch)*(n & gradD);
+}

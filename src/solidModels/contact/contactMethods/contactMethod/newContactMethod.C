@@ -1,0 +1,46 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "contactMethod.H"
+
+Foam::autoPtr<Foam::contactMethod> Foam::contactMethod::New
+(
+    const fvPatch& patch,
+    const dictionary& patchDict
+)
+{
+    if (!patchDict.found("method"))
+    {
+        FatalIOErrorInFunction(patchDict)
+            << "Missing entry 'method' in " << patchDict.name()
+            << " (slave patch " << patch.name() << ")" << nl
+            << "Valid methods:" << nl
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    const word methodType(patchDict.get<word>("method"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(methodType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(patchDict)
+            << "Unknown method " << methodType
+            << " in entry 'method' of " << patchDict.name() << nl << nl
+            << "Valid methods:" << nl
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    const word coeffsName(methodType + "Coeffs");
+    // An absent <method>Coeffs is an empty one, named where it would be,
+    // so that errors about its entries point at the right place
+    const dictionary coeffs(patchDict.subOrEmptyDict(coeffsName));
+
+    Info<< "Contact patch " << patch.name()
+        << ": selecting method " << methodType << endl;
+
+    return autoPtr<contactMethod>(cstrIter()(patch, coeffs));
+}

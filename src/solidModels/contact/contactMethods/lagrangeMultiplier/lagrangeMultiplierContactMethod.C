@@ -1,0 +1,74 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "lagrangeMultiplierContactMethod.H"
+#include "addToRunTimeSelectionTable.H"
+#include "normalContactLaws.H"
+
+namespace Foam
+{
+namespace contactMethods
+{
+    defineTypeNameAndDebug(lagrangeMultiplier, 0);
+    addToRunTimeSelectionTable(contactMethod, lagrangeMultiplier, dictionary);
+}
+}
+
+
+Foam::contactMethods::lagrangeMultiplier::lagrangeMultiplier
+(
+    const fvPatch& patch,
+    const dictionary& coeffs
+)
+:
+    contactMethod(patch, coeffs),
+    activeSetScale_(coeffs.getOrDefault<scalar>("activeSetScale", 1))
+{
+    if (!c4f::contact::validPenalty(activeSetScale_))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid activeSetScale " << activeSetScale_ << " in "
+            << coeffs.name() << " (contact patch " << patch.name() << "): "
+            << c4f::contact::describePenaltyRequirement().c_str()
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::contactMethods::lagrangeMultiplier::correct
+(
+    const contactSlaveState& state,
+    contactSlaveCondition& cond
+)
+{
+    cond.nChanged = 0;
+
+    forAll(state.gap, facei)
+    {
+        // An inactive face was traction-free: its multiplier is zero, not
+        // the solver-tolerance residue of its reaction
+        const scalar lambda =
+            cond.active[facei] ? state.reaction[facei] : 0;
+
+        const scalar c = activeSetScale_*state.K[facei]/state.h[facei];
+
+        const bool active =
+            state.inRange[facei]
+         && c4f::contact::activeByPrimalDual(lambda, state.solvedGap[facei], c);
+
+        if (active != cond.active[facei])
+        {
+            ++cond.nChanged;
+        }
+        cond.active[facei] = active;
+
+        cond.valueFraction[facei] = active ? 1 : 0;
+        cond.explicitPressure[facei] = 0;
+
+        // The reaction of the last solve is what the slave carries; the
+        // master gets exactly that, tensile or not, so the forces balance.
+        // A face released now carried it in the last solve only.
+        cond.pressure[facei] = active ? lambda : 0;
+    }
+}

@@ -1,0 +1,138 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "penaltyContactMethod.H"
+#include "addToRunTimeSelectionTable.H"
+#include "normalContactLaws.H"
+
+namespace Foam
+{
+namespace contactMethods
+{
+    defineTypeNameAndDebug(penalty, 0);
+    addToRunTimeSelectionTable(contactMethod, penalty, dictionary);
+}
+}
+
+
+Foam::contactMethods::penalty::penalty
+(
+    const fvPatch& patch,
+    const dictionary& coeffs
+)
+:
+    contactMethod(patch, coeffs),
+    scale_(coeffs.getOrDefault<scalar>("penaltyScale", 10)),
+    implicit_(coeffs.getOrDefault<bool>("implicit", true)),
+    omega_(coeffs.getOrDefault<scalar>("relaxationFactor", 0.05))
+{
+    if (!c4f::contact::validPenalty(scale_))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid penaltyScale " << scale_ << " in " << coeffs.name()
+            << " (contact patch " << patch.name() << "): "
+            << c4f::contact::describePenaltyRequirement().c_str()
+            << exit(FatalIOError);
+    }
+
+    if (!(omega_ > 0 && omega_ <= 1))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid relaxationFactor " << omega_ << " in "
+            << coeffs.name() << " (contact patch " << patch.name()
+            << "): it must lie in (0, 1]" << exit(FatalIOError);
+    }
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::contactMethods::penalty::epsN
+(
+    const contactSlaveState& state
+) const
+{
+    tmp<scalarField> teps(new scalarField(state.gap.size()));
+    scalarField& eps = teps.ref();
+    forAll(eps, facei)
+    {
+        eps[facei] = c4f::contact::stiffnessScaledPenalty
+        (
+            scale_, state.K[facei], state.h[facei]
+        );
+    }
+    return teps;
+}
+
+
+void Foam::contactMethods::penalty::correct
+(
+    const contactSlaveState& state,
+    contactSlaveCondition& cond
+)
+{
+    const scalarField eps(epsN(state));
+
+    cond.nChanged = 0;
+
+    forAll(state.gap, facei)
+    {
+        bool active = false;
+
+        if (!state.inRange[facei])
+        {
+            cond.valueFraction[facei] = 0;
+            cond.explicitPressure[facei] = 0;
+            cond.pressure[facei] = 0;
+        }
+        else if (implicit_)
+        {
+            // What the slave carried in the last solve: the Robin traction
+            // at the gap that solve reached. The master gets exactly that,
+            // as with the Lagrange multiplier's reaction; handing it the
+            // pressure of the gap before the solve would overshoot by
+            // eps/(K/L), the penalty-to-body stiffness ratio.
+            cond.pressure[facei] =
+                cond.active[facei]
+              ? -eps[facei]*state.solvedGap[facei]
+              : 0;
+
+            active = c4f::contact::penaltyPressure
+            (
+                state.gap[facei], eps[facei]
+            ).pressure > 0;
+
+            cond.valueFraction[facei] =
+                active
+              ? c4f::contact::robinValueFraction
+                (
+                    eps[facei], state.K[facei], state.delta[facei]
+                )
+              : 0;
+            cond.explicitPressure[facei] = 0;
+        }
+        else
+        {
+            // The slave and the master get the same relaxed pressure, so
+            // the forces balance in every corrector
+            const scalar pNew = c4f::contact::penaltyPressure
+            (
+                state.currentGap[facei], eps[facei]
+            ).pressure;
+
+            const scalar p =
+                cond.explicitPressure[facei]
+              + omega_*(pNew - cond.explicitPressure[facei]);
+
+            active = p > 0;
+            cond.valueFraction[facei] = 0;
+            cond.explicitPressure[facei] = p;
+            cond.pressure[facei] = p;
+        }
+
+        if (active != cond.active[facei])
+        {
+            ++cond.nChanged;
+        }
+        cond.active[facei] = active;
+    }
+}

@@ -1,0 +1,308 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "contactPatchPair.H"
+#include "polygonOverlap.H"
+#include "eigenFoamConversions.H"
+#include "Pstream.H"
+#include "ListOps.H"
+#include "mergePoints.H"
+#include "boundBox.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactPatchPair::contactPatchPair
+(
+    const fvPatch& slave,
+    const fvPatch& master,
+    const scalar searchDistance
+)
+:
+    slave_(slave),
+    master_(master),
+    searchDistance_(searchDistance),
+    masterStart_(0),
+    hitFace_(slave.size(), -1),
+    hitNormal_(slave.size(), Zero),
+    gap_(slave.size(), GREAT),
+    inRange_(slave.size(), false)
+{}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::contactPatchPair::gatherMaster()
+{
+    const polyPatch& pp = master_.patch();
+
+    List<pointField> procPoints(Pstream::nProcs());
+    List<faceList> procFaces(Pstream::nProcs());
+    procPoints[Pstream::myProcNo()] = pp.localPoints();
+    procFaces[Pstream::myProcNo()] = pp.localFaces();
+
+    Pstream::gatherList(procPoints);
+    Pstream::scatterList(procPoints);
+    Pstream::gatherList(procFaces);
+    Pstream::scatterList(procFaces);
+
+    // Concatenate, then merge the points processors share
+    DynamicList<point> allPoints;
+    DynamicList<face> allFaces;
+    forAll(procFaces, proci)
+    {
+        if (proci == Pstream::myProcNo())
+        {
+            masterStart_ = allFaces.size();
+        }
+        const label pointStart = allPoints.size();
+        allPoints.append(procPoints[proci]);
+        for (const face& f : procFaces[proci])
+        {
+            face g(f.size());
+            forAll(f, fp)
+            {
+                g[fp] = pointStart + f[fp];
+            }
+            allFaces.append(g);
+        }
+    }
+
+    const boundBox bb(allPoints, false);
+    labelList pointMap;
+    mergePoints
+    (
+        pointField(allPoints),
+        1e-9*max(bb.mag(), VSMALL),
+        false,
+        pointMap,
+        masterRefPoints_
+    );
+
+    masterRefFaces_.transfer(allFaces);
+    for (face& f : masterRefFaces_)
+    {
+        inplaceRenumber(pointMap, f);
+    }
+
+    // Inverse-distance weights of the faces around each point
+    List<DynamicList<label>> pf(masterRefPoints_.size());
+    forAll(masterRefFaces_, facei)
+    {
+        for (const label pointi : masterRefFaces_[facei])
+        {
+            pf[pointi].append(facei);
+        }
+    }
+    masterPointFaces_.setSize(pf.size());
+    masterPointWeights_.setSize(pf.size());
+    forAll(pf, pointi)
+    {
+        masterPointFaces_[pointi] = pf[pointi];
+        scalarField& w = masterPointWeights_[pointi];
+        w.setSize(pf[pointi].size());
+        forAll(w, k)
+        {
+            const point c =
+                masterRefFaces_[pf[pointi][k]].centre(masterRefPoints_);
+            w[k] = 1/max(mag(c - masterRefPoints_[pointi]), VSMALL);
+        }
+        w /= sum(w);
+    }
+
+    masterFaces_.clear();
+    for (const face& f : masterRefFaces_)
+    {
+        masterFaces_.push_back(std::vector<int>(f.begin(), f.end()));
+    }
+}
+
+
+void Foam::contactPatchPair::moveMaster(const vectorField& masterD)
+{
+    List<vectorField> procD(Pstream::nProcs());
+    procD[Pstream::myProcNo()] = masterD;
+    Pstream::gatherList(procD);
+    Pstream::scatterList(procD);
+
+    vectorField faceD(masterRefFaces_.size());
+    label facei = 0;
+    for (const vectorField& d : procD)
+    {
+        for (const vector& v : d)
+        {
+            faceD[facei++] = v;
+        }
+    }
+
+    masterPoints_.resize(masterRefPoints_.size());
+    forAll(masterRefPoints_, pointi)
+    {
+        vector d(Zero);
+        const labelList& pf = masterPointFaces_[pointi];
+        forAll(pf, k)
+        {
+            d += masterPointWeights_[pointi][k]*faceD[pf[k]];
+        }
+        masterPoints_[pointi] = c4fConvert::toEigen(masterRefPoints_[pointi] + d);
+    }
+
+    masterNormals_.resize(masterFaces_.size());
+    forAll(masterRefFaces_, facei)
+    {
+        const std::vector<Eigen::Vector3d> poly(masterPolygon(facei));
+        masterNormals_[facei] =
+            c4f::transfer::polygonPlane(poly).normal;
+    }
+}
+
+
+std::vector<Eigen::Vector3d>
+Foam::contactPatchPair::masterPolygon(const label facei) const
+{
+    std::vector<Eigen::Vector3d> poly;
+    for (const int v : masterFaces_[facei])
+    {
+        poly.push_back(masterPoints_[v]);
+    }
+    return poly;
+}
+
+
+std::vector<Eigen::Vector3d>
+Foam::contactPatchPair::slavePolygon(const label facei) const
+{
+    const face& f = slave_.patch().localFaces()[facei];
+    std::vector<Eigen::Vector3d> poly;
+    for (const label v : f)
+    {
+        poly.push_back(c4fConvert::toEigen(slavePoints_[v]));
+    }
+    return poly;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::contactPatchPair::update
+(
+    const vectorField& masterD,
+    const vectorField& slaveD,
+    const pointVectorField& pointD
+)
+{
+    const pointField& meshPoints = slave_.boundaryMesh().mesh().points();
+
+    if (masterRefFaces_.empty() && returnReduce(master_.size(), sumOp<label>()))
+    {
+        gatherMaster();
+    }
+    moveMaster(masterD);
+
+    // CGAL has no refit: the tree is rebuilt in every corrector (see
+    // make bench for what it costs against the solve)
+    search_.build(masterPoints_, masterFaces_);
+
+    const labelList& smp = slave_.patch().meshPoints();
+    slavePoints_ =
+        pointField(meshPoints, smp)
+      + vectorField(pointD.primitiveField(), smp);
+
+    const vectorField x(slave_.Cf() + slaveD);
+
+    forAll(x, facei)
+    {
+        const Eigen::Vector3d q(c4fConvert::toEigen(x[facei]));
+        const c4f::search::SearchHit hit =
+            search_.closest(q, searchDistance_);
+
+        inRange_[facei] = hit.found;
+        if (hit.found)
+        {
+            hitFace_[facei] = hit.face;
+            const Eigen::Vector3d& n = masterNormals_[hit.face];
+            hitNormal_[facei] = c4fConvert::toFoam(n);
+            gap_[facei] = (q - hit.point).dot(n);
+        }
+        else
+        {
+            hitFace_[facei] = -1;
+            hitNormal_[facei] = -slave_.nf()()[facei];
+            gap_[facei] = searchDistance_;
+        }
+    }
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::contactPatchPair::masterForce
+(
+    const vectorField& slaveForce
+) const
+{
+    vectorField F(masterFaces_.size(), Zero);
+
+    forAll(slaveForce, facei)
+    {
+        if (!inRange_[facei] || magSqr(slaveForce[facei]) == 0)
+        {
+            continue;
+        }
+
+        const std::vector<Eigen::Vector3d> poly(slavePolygon(facei));
+
+        // Candidates: master faces near the slave polygon, the box grown by
+        // the gap so that an open or penetrated face still finds them
+        Eigen::Vector3d lo(poly[0]), hi(poly[0]);
+        for (const Eigen::Vector3d& p : poly)
+        {
+            lo = lo.cwiseMin(p);
+            hi = hi.cwiseMax(p);
+        }
+        const double grow = mag(gap_[facei]) + 1e-6*(hi - lo).norm();
+        lo.array() -= grow;
+        hi.array() += grow;
+
+        const std::vector<int> cand(search_.facesInBox(lo, hi));
+
+        std::vector<double> overlaps;
+        overlaps.reserve(cand.size());
+        for (const int j : cand)
+        {
+            // Only faces that face the slave: the far side of a thin
+            // master body must not share the force
+            const double facing =
+                masterNormals_[j].dot(masterNormals_[hitFace_[facei]]);
+            overlaps.push_back
+            (
+                facing > 0
+              ? c4f::transfer::overlapArea(poly, masterPolygon(j))
+              : 0
+            );
+        }
+
+        const std::vector<double> w
+        (
+            c4f::transfer::conservativeWeights(overlaps)
+        );
+
+        if (w.empty())
+        {
+            F[hitFace_[facei]] -= slaveForce[facei];
+        }
+        else
+        {
+            forAll(cand, k)
+            {
+                F[cand[k]] -= w[k]*slaveForce[facei];
+            }
+        }
+    }
+
+    Pstream::listCombineGather(F, plusEqOp<vector>());
+    Pstream::listCombineScatter(F);
+
+    return tmp<vectorField>
+    (
+        new vectorField(SubList<vector>(F, master_.size(), masterStart_))
+    );
+}

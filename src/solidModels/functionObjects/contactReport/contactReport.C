@@ -1,0 +1,145 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "contactReport.H"
+#include "addToRunTimeSelectionTable.H"
+#include "volFields.H"
+#include "solidContactFvPatchVectorField.H"
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(contactReport, 0);
+    addToRunTimeSelectionTable(functionObject, contactReport, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::contactReport::findSlaves()
+{
+    if (!mesh_.foundObject<volVectorField>(fieldName_))
+    {
+        FatalErrorInFunction
+            << "Function object " << name() << ": no field " << fieldName_
+            << " (entry 'field') in the registry" << exit(FatalError);
+    }
+
+    const volVectorField& D = mesh_.lookupObject<volVectorField>(fieldName_);
+
+    DynamicList<label> slaves;
+    wordList names;
+    forAll(D.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& pf = D.boundaryField()[patchi];
+        if
+        (
+            isA<solidContactFvPatchVectorField>(pf)
+         && !refCast<const solidContactFvPatchVectorField>(pf).master()
+        )
+        {
+            slaves.append(patchi);
+            names.append(pf.patch().name());
+        }
+    }
+    slavePatches_.transfer(slaves);
+    resetNames(names);
+}
+
+
+void Foam::functionObjects::contactReport::writeFileHeader(const label i)
+{
+    OFstream& os = files(i);
+    writeHeader(os, "Contact report of slave patch " + names()[i]);
+    writeHeader
+    (
+        os,
+        "Forces are totals over the patch as meshed [N]"
+        " (per cell thickness in 2D)"
+    );
+    writeCommented(os, "time");
+    for
+    (
+        const char* col :
+        {
+            "normalForce", "tangentialForce", "contactArea", "maxPressure",
+            "maxPenetration", "activeFaces", "outerCorrectors"
+        }
+    )
+    {
+        writeTabbed(os, col);
+    }
+    os  << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::contactReport::contactReport
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    logFiles(obr_, name),
+    fieldName_("D"),
+    slavePatches_()
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::contactReport::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    fieldName_ = dict.getOrDefault<word>("field", "D");
+    return true;
+}
+
+
+bool Foam::functionObjects::contactReport::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::contactReport::write()
+{
+    if (names().empty())
+    {
+        findSlaves();
+    }
+
+    const volVectorField& D = mesh_.lookupObject<volVectorField>(fieldName_);
+
+    forAll(slavePatches_, i)
+    {
+        const solidContactFvPatchVectorField::report r =
+            refCast<const solidContactFvPatchVectorField>
+            (
+                D.boundaryField()[slavePatches_[i]]
+            ).contactReport();
+
+        if (Pstream::master())
+        {
+            OFstream& os = files(i);
+            writeCurrentTime(os);
+            os  << tab << r.normalForce
+                << tab << r.tangentialForce
+                << tab << r.contactArea
+                << tab << r.maxPressure
+                << tab << r.maxPenetration
+                << tab << r.activeFaces
+                << tab << r.correctors
+                << endl;
+        }
+    }
+    return true;
+}
