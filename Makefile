@@ -10,7 +10,7 @@ ENV    := source etc/bashrc
 # The clone this make runs in, not the one that last ran bin/bootstrap
 export C4F_ROOT := $(CURDIR)
 PY     := /usr/bin/python3
-DEFAULT_TUTORIAL := tutorials/plateHole
+DEFAULT_TUTORIAL := tutorials/hertzCylinder
 
 .PHONY: all bootstrap build run test bench clean distclean shellcheck
 

@@ -143,6 +143,24 @@ def serial_parallel_agree(res, serial, parallel, name, tol):
     res.add(name, err <= tol, err, 0.0, err, tol)
 
 
+def contact_serial_parallel_agree(res, serial, parallel, name, tol):
+    """Peak pressure and total normal force of the slave patch, from the
+    contactReport rows of the serial and the decomposed run."""
+    def last_row(case):
+        path = os.path.join(case, "postProcessing/contactReport/0/cylinderContact.dat")
+        rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
+        return [float(v) for v in rows[-1]]
+    try:
+        s, p = last_row(serial), last_row(parallel)
+    except (OSError, IndexError, ValueError) as e:
+        res.add(name + "/contactReport", False, note=str(e))
+        return
+    # columns: time normalForce tangentialForce contactArea maxPressure ...
+    for col, what in ((1, "normal_force"), (4, "peak_pressure")):
+        err = abs(p[col] - s[col]) / abs(s[col]) if s[col] else 1.0
+        res.add("%s/%s_equals_serial" % (name, what), err <= tol, p[col], s[col], err, tol)
+
+
 def decomposed(res, case, name, nprocs):
     log = open(os.path.join(case, "log.solidContactFoam")).read()
     ok = ("nProcs : %d" % nprocs) in log and os.path.isdir(os.path.join(case, "processor1"))
@@ -203,6 +221,29 @@ def main():
             # an error of that order, so they agree to about 1e-7 of D.
             serial_parallel_agree(res, serial, par,
                                   "plateHoleParallel/D_equals_serial", 1e-6)
+
+    if want("contactPatchTest"):
+        for method in ("lagrangeMultiplier", "penalty"):
+            print("== contactPatchTest: non-matching interface, %s" % method, flush=True)
+            tutorial_case(res, "contactPatchTest", "contactPatchTest_" + method,
+                          ["-method", method])
+
+    if want("hertzCylinder"):
+        cases = {}
+        for method in ("lagrangeMultiplier", "penalty"):
+            print("== hertzCylinder: Hertz line contact, %s" % method, flush=True)
+            cases[method] = tutorial_case(res, "hertzCylinder", "hertzCylinder_" + method,
+                                          ["-method", method])
+        vtk_written(res, cases["lagrangeMultiplier"], "hertzCylinder_lagrangeMultiplier",
+                    ["D", "sigma", "contactPressure", "contactGap", "contactTraction",
+                     "contactActive"])
+        print("== hertzCylinder: 2 processors, contact zone cut at x = 3 mm", flush=True)
+        par = tutorial_case(res, "hertzCylinder", "hertzCylinderParallel",
+                            ["-method", "lagrangeMultiplier", "-parallel"])
+        if os.path.exists(os.path.join(par, "log.solidContactFoam")):
+            decomposed(res, par, "hertzCylinderParallel/decomposed", 2)
+            contact_serial_parallel_agree(res, cases["lagrangeMultiplier"], par,
+                                          "hertzCylinderParallel", 1e-6)
 
     if want("uniaxialBar"):
         print("== uniaxialBar: load steps from a uniformFixedValue table", flush=True)

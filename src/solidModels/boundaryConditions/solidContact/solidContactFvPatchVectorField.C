@@ -340,10 +340,19 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
 
     contactSlaveState state;
     state.currentGap = pair_->gap();
-    state.solvedGap = pair_->gap();
+
+    // A face held in the last solve is judged by where that solve put it
+    // against the surface it was held to; a free face by the surface now
+    state.solvedGap = state.currentGap;
     if (target_.size() == Dn.size())
     {
-        state.solvedGap = Dn - target_;
+        forAll(Dn, facei)
+        {
+            if (cond_.active[facei])
+            {
+                state.solvedGap[facei] = Dn[facei] - target_[facei];
+            }
+        }
     }
     state.gap = Dn - relaxTarget(Dn - pair_->gap());
     state.normal = n;

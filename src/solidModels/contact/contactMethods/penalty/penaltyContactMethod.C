@@ -86,20 +86,29 @@ void Foam::contactMethods::penalty::correct
         }
         else if (implicit_)
         {
-            // What the slave carried in the last solve: the Robin traction
-            // at the gap that solve reached. The master gets exactly that,
-            // as with the Lagrange multiplier's reaction; handing it the
-            // pressure of the gap before the solve would overshoot by
-            // eps/(K/L), the penalty-to-body stiffness ratio.
+            // What the slave carried in the last solve: the normal
+            // reaction of its face stress, which at convergence is the
+            // Robin traction eps <-g_N>. The master gets exactly that, as
+            // with the Lagrange multiplier; handing it the pressure of the
+            // gap before the solve would overshoot by eps/(K/L), the
+            // penalty-to-body stiffness ratio.
             cond.pressure[facei] =
                 cond.active[facei]
-              ? -eps[facei]*state.solvedGap[facei]
+              ? state.reaction[facei]
               : 0;
 
-            active = c4f::contact::penaltyPressure
-            (
-                state.gap[facei], eps[facei]
-            ).pressure > 0;
+            // A face in contact stays so while it pushes; a free face
+            // enters when it penetrates the (relaxed) master. Judging an
+            // active face by its gap instead would flip it whenever the
+            // master moves by more than the penetration, p/eps, between
+            // correctors.
+            active =
+                cond.active[facei]
+              ? cond.pressure[facei] > 0
+              : c4f::contact::penaltyPressure
+                (
+                    state.gap[facei], eps[facei]
+                ).pressure > 0;
 
             cond.valueFraction[facei] =
                 active

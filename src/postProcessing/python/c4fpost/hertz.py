@@ -1,0 +1,278 @@
+"""Hertz line contact (plane strain): two parallel cylinders, or a cylinder on
+a flat, pressed together by a load P' per unit length (Johnson, Contact
+Mechanics, 1985, sec. 4.2 and 5.6):
+
+  1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2      contact modulus
+  1/R  = 1/R1 + 1/R2                          (R2 = inf for a flat)
+  a    = sqrt(4 P' R / (pi E*))               semi-width of the contact strip
+  p0   = 2 P' / (pi a)  = a E* / (2 R)        peak pressure
+  p(x) = p0 sqrt(1 - x^2/a^2),  |x| <= a
+
+Check against the NAFEMS-type example (R = 100 mm steel cylinder on a steel
+flat, E = 210 GPa, nu = 0.3, P' = 35 kN/mm): a = 6.21 mm, p0 = 3585 MPa.
+
+    >>> Es = contact_modulus(210e9, 0.3, 210e9, 0.3)
+    >>> a = half_width(3.5e7, 0.1, Es); round(a * 1e3, 2)
+    6.21
+    >>> round(peak_pressure(3.5e7, a) / 1e6)
+    3585
+
+`python3 hertz.py` runs these and the other self-checks.
+
+The module also has the few polyMesh geometry helpers (face centres and
+area vectors of a patch, cell volumes and centres) that the contact
+comparisons need; they sit here rather than in foamio.py, which is shared.
+ASCII meshes only (writeFormat ascii), like foamio.
+"""
+import math
+import os
+import re
+
+import numpy as np
+
+
+# --------------------------------------------------------------------------
+# Closed form
+
+def contact_modulus(E1, nu1, E2=None, nu2=None):
+    """E* with 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (body 2 defaults to
+    body 1). Plane strain."""
+    if E2 is None:
+        E2, nu2 = E1, nu1
+    return 1.0 / ((1.0 - nu1 ** 2) / E1 + (1.0 - nu2 ** 2) / E2)
+
+
+def effective_radius(R1, R2=math.inf):
+    """R with 1/R = 1/R1 + 1/R2; R2 = inf (default) is a flat."""
+    return 1.0 / (1.0 / R1 + (0.0 if math.isinf(R2) else 1.0 / R2))
+
+
+def half_width(P, R, Estar):
+    """Semi-width a of the contact strip for the load P' per unit length."""
+    return math.sqrt(4.0 * P * R / (math.pi * Estar))
+
+
+def peak_pressure(P, a):
+    """p0 = 2 P' / (pi a)."""
+    return 2.0 * P / (math.pi * a)
+
+
+def load_for_half_width(a, R, Estar):
+    """P' that gives the semi-width a (inverse of half_width)."""
+    return math.pi * Estar * a * a / (4.0 * R)
+
+
+def pressure(x, P, R, Estar):
+    """p(x) = p0 sqrt(1 - x^2/a^2) inside the strip, 0 outside."""
+    a = half_width(P, R, Estar)
+    p0 = peak_pressure(P, a)
+    x = np.asarray(x, float)
+    return p0 * np.sqrt(np.clip(1.0 - (x / a) ** 2, 0.0, None))
+
+
+def cylinder_compression(P, R, E, nu, a):
+    """Approach of a cylinder's centre towards its contact line under the
+    Hertz pressure (Johnson eq. 5.36 per body, plane strain):
+        delta = P'(1 - nu^2)/(pi E) (2 ln(4R/a) - 1).
+    In two dimensions the approach of a half-space is not defined without a
+    datum (it grows as ln of the distance); see the hertzCylinder tutorial
+    for how its DELTA was estimated."""
+    return P * (1.0 - nu ** 2) / (math.pi * E) * (2.0 * math.log(4.0 * R / a) - 1.0)
+
+
+# --------------------------------------------------------------------------
+# polyMesh geometry (ASCII)
+
+def _strip(text):
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    text = re.sub(r"//[^\n]*", "", text)
+    return re.sub(r"\bFoamFile\s*\{[^}]*\}", "", text, count=1)
+
+
+def _body(path):
+    """The text inside the top-level counted list 'N ( ... )' of a file."""
+    text = _strip(open(path).read())
+    m = re.search(r"(\d+)\s*\(", text)
+    if not m:
+        raise ValueError("no counted list in %s" % path)
+    return int(m.group(1)), text[m.end():text.rindex(")")]
+
+
+def read_points(case):
+    """constant/polyMesh/points as an (n, 3) array."""
+    n, body = _body(os.path.join(case, "constant/polyMesh/points"))
+    pts = np.array(body.replace("(", " ").replace(")", " ").split(), float)
+    if pts.size != 3 * n:
+        raise ValueError("points: %d values for %d points" % (pts.size, n))
+    return pts.reshape(n, 3)
+
+
+def read_faces(case):
+    """constant/polyMesh/faces (ASCII faceList) as a list of index arrays."""
+    n, body = _body(os.path.join(case, "constant/polyMesh/faces"))
+    faces = [np.array(f.split(), int) for f in re.findall(r"\d+\s*\(([^)]*)\)", body)]
+    if len(faces) != n:
+        raise ValueError("faces: read %d of %d" % (len(faces), n))
+    return faces
+
+
+def read_labels(case, name):
+    """constant/polyMesh/<name> (owner, neighbour) as an int array."""
+    n, body = _body(os.path.join(case, "constant/polyMesh", name))
+    vals = np.array(body.split(), int)
+    if vals.size != n:
+        raise ValueError("%s: %d values for %d" % (name, vals.size, n))
+    return vals
+
+
+def face_geometry(points, face):
+    """(centre, area vector) of one face the way OpenFOAM computes them:
+    triangles fanned from the vertex average, area-weighted centroids."""
+    p = points[face]
+    c0 = p.mean(axis=0)
+    q = np.roll(p, -1, axis=0)
+    tri_n = 0.5 * np.cross(p - c0, q - c0)
+    tri_c = (p + q + c0) / 3.0
+    mag = np.linalg.norm(tri_n, axis=1)
+    Sf = tri_n.sum(axis=0)
+    Cf = (tri_c * mag[:, None]).sum(axis=0) / mag.sum() if mag.sum() > 0 else c0
+    return Cf, Sf
+
+
+def boundary_patches(case):
+    """{patch: (startFace, nFaces)} from constant/polyMesh/boundary."""
+    text = _strip(open(os.path.join(case, "constant/polyMesh/boundary")).read())
+    out = {}
+    for m in re.finditer(r"(\w+)\s*\{([^}]*)\}", text):
+        nf = re.search(r"\bnFaces\s+(\d+)", m.group(2))
+        sf = re.search(r"\bstartFace\s+(\d+)", m.group(2))
+        if nf and sf:
+            out[m.group(1)] = (int(sf.group(1)), int(nf.group(1)))
+    return out
+
+
+def patch_geometry(case, patch):
+    """Face centres Cf (n, 3) and outward area vectors Sf (n, 3) of a patch,
+    in face order, in the mesh's (reference) configuration."""
+    start, n = boundary_patches(case)[patch]
+    points = read_points(case)
+    faces = read_faces(case)
+    Cf = np.empty((n, 3))
+    Sf = np.empty((n, 3))
+    for i in range(n):
+        Cf[i], Sf[i] = face_geometry(points, faces[start + i])
+    return Cf, Sf
+
+
+def cell_centres_volumes(case):
+    """Cell centres (n, 3) and volumes (n,) as OpenFOAM computes them
+    (pyramids from each face to the mean of the cell's face centres)."""
+    points = read_points(case)
+    faces = read_faces(case)
+    owner = read_labels(case, "owner")
+    neigh = read_labels(case, "neighbour")
+    nf = len(faces)
+    ncells = owner.max() + 1
+    Cf = np.empty((nf, 3))
+    Sf = np.empty((nf, 3))
+    for i, f in enumerate(faces):
+        Cf[i], Sf[i] = face_geometry(points, f)
+    nIn = neigh.size
+    # estimated centre: the mean of the face centres
+    cEst = np.zeros((ncells, 3))
+    nFc = np.zeros(ncells)
+    np.add.at(cEst, owner, Cf)
+    np.add.at(nFc, owner, 1)
+    np.add.at(cEst, neigh, Cf[:nIn])
+    np.add.at(nFc, neigh, 1)
+    cEst /= nFc[:, None]
+    V = np.zeros(ncells)
+    C = np.zeros((ncells, 3))
+    for cells, sl, sign in ((owner, slice(None), 1.0), (neigh, slice(0, nIn), -1.0)):
+        pyr = sign * np.einsum("ij,ij->i", Sf[sl], Cf[sl] - cEst[cells])
+        pc = 0.75 * Cf[sl] + 0.25 * cEst[cells]
+        np.add.at(V, cells, pyr)
+        np.add.at(C, cells, pyr[:, None] * pc)
+    C /= V[:, None]
+    return C, V / 3.0
+
+
+def thickness(case):
+    """Extent of the mesh in z (one cell thick 2-D cases)."""
+    z = read_points(case)[:, 2]
+    return float(z.max() - z.min())
+
+
+def read_entry(path, key):
+    """First 'key value;' scalar or word in a dictionary file (no macros)."""
+    text = _strip(open(path).read())
+    m = re.search(r"(?:^|[\s{;])%s\s+([^\s;]+)\s*;" % re.escape(key), text)
+    if not m:
+        raise KeyError("%s not in %s" % (key, path))
+    v = m.group(1)
+    try:
+        return float(v)
+    except ValueError:
+        return v
+
+
+def elastic_constants(case):
+    """(E, nu, planeStress) from constant/mechanicalProperties."""
+    path = os.path.join(case, "constant/mechanicalProperties")
+    E = read_entry(path, "E")
+    nu = read_entry(path, "nu")
+    ps = str(read_entry(path, "planeStress")).lower() in ("yes", "on", "true", "1")
+    return E, nu, ps
+
+
+def impK(E, nu, planeStress=False):
+    """K = 2 mu + lambda, the implicit stiffness the solver and the penalty
+    factor use."""
+    mu = E / (2.0 * (1.0 + nu))
+    lam = nu * E / ((1.0 + nu) * (1.0 - nu)) if planeStress \
+        else nu * E / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    return 2.0 * mu + lam
+
+
+# --------------------------------------------------------------------------
+
+def _self_test():
+    Es = contact_modulus(210e9, 0.3, 210e9, 0.3)
+    R = effective_radius(0.1)
+    a = half_width(3.5e7, R, Es)
+    p0 = peak_pressure(3.5e7, a)
+    ok = True
+
+    def check(name, value, ref, tol):
+        nonlocal ok
+        good = abs(value - ref) <= tol
+        ok &= good
+        print("%s %-40s value=%-12.6g ref=%-12.6g tol=%.3g"
+              % ("PASS" if good else "FAIL", name, value, ref, tol))
+
+    check("NAFEMS a [mm]", a * 1e3, 6.21, 0.005)
+    check("NAFEMS p0 [MPa]", p0 / 1e6, 3585, 0.5)
+    check("p0 = a E*/(2R)", p0, a * Es / (2 * R), 1e-6 * p0)
+    check("R of two equal cylinders", effective_radius(0.1, 0.1), 0.05, 1e-15)
+    check("inverse of half_width", load_for_half_width(a, R, Es), 3.5e7, 1e-6)
+    # the pressure integrates to P'
+    x = np.linspace(-a, a, 200001)
+    xm = 0.5 * (x[1:] + x[:-1])
+    check("integral of p(x) / P'", float((pressure(xm, 3.5e7, R, Es) * np.diff(x)).sum()) / 3.5e7,
+          1.0, 1e-6)
+    check("p outside the strip", float(pressure(1.01 * a, 3.5e7, R, Es)), 0.0, 0.0)
+    # geometry: a unit square face, and a 1 x 2 x 3 box's volume
+    pts = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], float)
+    Cf, Sf = face_geometry(pts, np.arange(4))
+    check("square face area", float(Sf[2]), 1.0, 1e-15)
+    check("square face centre x", float(Cf[0]), 0.5, 1e-15)
+    check("K(E=1, nu=0)", impK(1.0, 0.0), 1.0, 1e-15)
+    check("K(E=1, nu=0.3), plane strain", impK(1.0, 0.3), 0.7 / (1.3 * 0.4), 1e-15)
+    return ok
+
+
+if __name__ == "__main__":
+    import doctest
+    import sys
+    failed, _ = doctest.testmod()
+    sys.exit(0 if _self_test() and not failed else 1)

@@ -1,0 +1,276 @@
+#!/usr/bin/python3
+"""hertzCylinder: compare the contact pressure on the cylinder with Hertz.
+
+The checks, their tolerances and where the tolerances come from live here,
+once: the tutorial prints them, the regression runner (tests/run.py) reads
+them with --json.
+
+Data (latest time, reference configuration): contactPressure on the slave
+patch cylinderContact (positive in compression), its face centres and area
+vectors from constant/polyMesh (c4fpost.hertz.patch_geometry).
+
+Load. The model is the half x >= 0, one cell (dz) thick, so the load per
+unit length of the FULL cylinder is
+    P' = 2 sum_f p_f |Sf_f| (-n_y,f) / dz,
+the vertical resultant of the normal contact pressure on the half patch
+(n outward from the cylinder; -n_y > 0.99 inside the contact strip). It is
+the MEASURED load: Hertz's a and p0 are evaluated for it, so the test does
+not depend on how well DELTA was estimated. The resultants of
+contactTraction and of the contactReport function object are printed
+beside it when present.
+
+Checks:
+  - peak pressure: max_f p_f against Hertz p(x) at the centre of that face
+    (the first face's centre is at x = h/2, where p = p0 sqrt(1 - h^2/4a^2),
+    0.05 % below p0 for h = a/23: evaluating Hertz there instead of at
+    x = 0 removes that bias). Tolerance 3 % of the Hertz value. Sources
+    of error: the discretisation (a/h ~ 23 slave faces across the
+    semi-width; the finite-volume pressure is the traction of the
+    cell-centred solution at the face), the finite block (W = H = 32 a;
+    Hertz assumes half-spaces) and the outer correctors stopping at 1e-7.
+    The 3 % is the project's target for this mesh; it has not been
+    measured yet (the contact condition was being written when this case
+    was set up) and should be revisited with a mesh study like plateHole's.
+  - contact semi-width: a_num is the outer edge of the outermost active face,
+    x_last + w_last/2 (w = face width projected on x). The discrete edge lies
+    between that face's centre and the next face's centre, so a_num is the
+    midpoint estimate with a resolution error up to half a face width; the
+    active set is taken from contactActive when written, else p > 1e-6 max p.
+    Tolerance 1.5 slave-face widths (the width of the face at x = a_Hertz):
+    half a face from the sampling plus one face for the discretisation of
+    the gap near the edge, where the pressure vanishes like sqrt(a - x).
+  The interpolated zero of a p^2 = p0^2 (1 - x^2/a^2) least-squares fit over
+  the active faces is printed as a second estimate of a (not checked).
+"""
+import argparse
+import json
+import os
+import sys
+
+# In the repository the package is three levels up; a copied case finds it
+# through $C4F_ROOT, which etc/bashrc exports
+for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
+           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
+    if os.path.isdir(os.path.join(_p, "c4fpost")):
+        sys.path.insert(0, _p)
+        break
+from c4fpost import foamio, hertz  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+R = 0.1                   # cylinder radius [m], system/blockMeshDict
+SLAVE = "cylinderContact"
+P0_TOL = 0.03             # fraction of the Hertz peak pressure
+A_TOL_FACES = 1.5         # slave face widths at x = a
+
+
+def _contact_report(case, patch):
+    """Last row of postProcessing/contactReport/<t>/<patch>.dat as a dict,
+    or None."""
+    base = os.path.join(case, "postProcessing", "contactReport")
+    if not os.path.isdir(base):
+        return None
+    rows, names = None, None
+    for d in sorted(os.listdir(base), key=lambda s: float(s) if s.replace(".", "", 1).isdigit() else -1):
+        path = os.path.join(base, d, patch + ".dat")
+        if not os.path.exists(path):
+            continue
+        for line in open(path):
+            s = line.strip()
+            if not s:
+                continue
+            if s.startswith("#"):
+                words = s.lstrip("#").split()
+                if "normalForce" in words:
+                    names = words
+                continue
+            rows = s.split()
+    if rows is None:
+        return None
+    names = names or ["time", "normalForce", "tangentialForce", "contactArea",
+                      "maxPressure", "maxPenetration", "activeFaces", "outerCorrectors"]
+    out = {}
+    for k, v in zip(names, rows):
+        try:
+            out[k] = float(v)
+        except ValueError:
+            pass
+    return out
+
+
+def no_contact(time, wx):
+    """Both checks failed: nothing to compare with."""
+    print("compareHertz: no contact on %s at time %s" % (SLAVE, time))
+    inf = float("inf")
+    checks = [
+        dict(name="hertzCylinder/peak_pressure", value=0.0, reference=0.0, error=inf,
+             tolerance=P0_TOL, units="Pa (error: fraction of Hertz)", passed=False),
+        dict(name="hertzCylinder/contact_half_width", value=0.0, reference=0.0, error=inf,
+             tolerance=A_TOL_FACES * float(wx[0]), units="m", passed=False),
+    ]
+    return dict(time=time, checks=checks, P=0.0)
+
+
+def compare(case):
+    time = foamio.latest_time(case)
+    E, nu, planeStress = hertz.elastic_constants(case)
+    # Plane stress would use E* = E/2 (nu -> 0 in the plane-strain formula)
+    Es = hertz.contact_modulus(E, 0.0 if planeStress else nu)
+    dz = hertz.thickness(case)
+
+    Cf, Sf = hertz.patch_geometry(case, SLAVE)
+    n = Cf.shape[0]
+    area = np.linalg.norm(Sf, axis=1)
+    nf = Sf / area[:, None]
+    p = foamio.read_patch(os.path.join(case, time, "contactPressure"), SLAVE, n)
+    activePath = os.path.join(case, time, "contactActive")
+    if os.path.exists(activePath):
+        active = foamio.read_patch(activePath, SLAVE, n) > 0.5
+        activeFrom = "contactActive"
+    else:
+        active = p > 1e-6 * max(p.max(), 0.0) if p.max() > 0 else np.zeros(n, bool)
+        activeFrom = "p > 1e-6 max p"
+
+    order = np.argsort(Cf[:, 0])
+    x = Cf[order, 0]
+    p, active, area, nf = p[order], active[order], area[order], nf[order]
+    # face width projected on x (faces are one cell thick in z)
+    wx = area / dz * np.abs(nf[:, 1])
+
+    P = 2.0 * float(np.sum(p * area * -nf[:, 1])) / dz
+    if not active.any() or P <= 0:
+        return no_contact(time, wx)
+    aH = hertz.half_width(P, R, Es)
+    p0H = hertz.peak_pressure(P, aH)
+
+    iLast = int(np.nonzero(active)[0].max())
+    aNum = float(x[iLast] + 0.5 * wx[iLast])
+    holes = int((~active[:iLast + 1]).sum())
+    iA = int(np.argmin(np.abs(x - aH)))
+    hA = float(wx[iA])
+
+    iMax = int(np.argmax(p))
+    p0Ref = float(hertz.pressure(x[iMax], P, R, Es))
+
+    # Least-squares ellipse through the active faces: p^2 = c0 + c1 x^2
+    if active.sum() >= 3:
+        c1, c0 = np.polyfit(x[active] ** 2, p[active] ** 2, 1)
+        aFit = float(np.sqrt(-c0 / c1)) if c1 < 0 < c0 else float("nan")
+    else:
+        aFit = float("nan")
+
+    extra = {}
+    tPath = os.path.join(case, time, "contactTraction")
+    if os.path.exists(tPath):
+        tr = foamio.read_patch(tPath, SLAVE, n)[order]
+        extra["P_contactTraction"] = 2.0 * float(np.sum(tr[:, 1] * area)) / dz
+    rep = _contact_report(case, SLAVE)
+    if rep and "normalForce" in rep:
+        extra["P_contactReport"] = 2.0 * rep["normalForce"] / dz
+        extra["report"] = rep
+
+    method = None
+    try:
+        method = hertz.read_entry(os.path.join(case, "0", "D"), "method")
+    except (KeyError, OSError):
+        pass
+
+    checks = [
+        dict(name="hertzCylinder/peak_pressure", value=float(p[iMax]), reference=p0Ref,
+             error=abs(float(p[iMax]) - p0Ref) / p0Ref, tolerance=P0_TOL,
+             units="Pa (error: fraction of Hertz)"),
+        dict(name="hertzCylinder/contact_half_width", value=aNum, reference=float(aH),
+             error=abs(aNum - aH), tolerance=A_TOL_FACES * hA,
+             units="m (tolerance: %.1f face widths)" % A_TOL_FACES),
+    ]
+    for c in checks:
+        c["passed"] = bool(c["error"] <= c["tolerance"])
+    return dict(time=time, method=method, P=P, aH=aH, p0H=p0H, aNum=aNum, aFit=aFit,
+                hA=hA, holes=holes, activeFrom=activeFrom, nActive=int(active.sum()),
+                E=E, nu=nu, Es=Es, x=x.tolist(), p=p.tolist(), active=active.tolist(),
+                extra=extra, checks=checks)
+
+
+def plot(res, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    aH, p0H = res["aH"], res["p0H"]
+    x = np.array(res["x"])
+    p = np.array(res["p"])
+    sel = x < 1.6 * aH
+    xx = np.linspace(0, 1.6 * aH, 600)
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    ax.plot(xx * 1e3, hertz.pressure(xx, res["P"], R, res["Es"]) / 1e6, "k-",
+            label="Hertz for the measured P' = %.4g N/m" % res["P"])
+    ax.plot(x[sel] * 1e3, p[sel] / 1e6, "o", ms=4,
+            label="solidContactFoam (%s faces)" % (res["method"] or "contact"))
+    ax.axvline(aH * 1e3, color="k", ls=":", lw=1)
+    ax.axvline(res["aNum"] * 1e3, color="C3", ls="--", lw=1,
+               label="a: Hertz %.3f mm, numerical %.3f mm" % (aH * 1e3, res["aNum"] * 1e3))
+    ax.set_xlabel("x [mm] on cylinderContact")
+    ax.set_ylabel("contact pressure [MPa]")
+    ax.set_title("hertzCylinder: p0 Hertz %.0f MPa, numerical %.0f MPa"
+                 % (p0H / 1e6, p.max() / 1e6))
+    ax.set_xlim(0, 1.6 * aH * 1e3)
+    ax.set_ylim(0, 1.15 * max(p0H, p.max()) / 1e6)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("case", nargs="?", default=".")
+    ap.add_argument("--json", help="write the checks to this file")
+    ap.add_argument("--png", default="hertzPressure.png")
+    args = ap.parse_args()
+    res = compare(args.case)
+    if res["P"] <= 0:
+        for c in res["checks"]:
+            print("FAIL %-45s (no contact)" % c["name"])
+        if args.json:
+            with open(args.json, "w") as f:
+                json.dump(res["checks"], f, indent=1)
+        return 1
+    print("hertzCylinder: contact pressure on %s against Hertz (time %s, method %s)"
+          % (SLAVE, res["time"], res["method"]))
+    print("  E* = %.6g Pa, R = %g m; measured P' = %.6g N/m (full cylinder)"
+          % (res["Es"], R, res["P"]))
+    for k in ("P_contactTraction", "P_contactReport"):
+        if k in res["extra"]:
+            print("  P' from %-16s = %.6g N/m (%+.3g %% of the pressure resultant)"
+                  % (k[2:], res["extra"][k], 100 * (res["extra"][k] / res["P"] - 1)))
+    print("  Hertz: a = %.5g mm, p0 = %.6g MPa" % (res["aH"] * 1e3, res["p0H"] / 1e6))
+    print("  numerical: %d active faces (%s), a = %.5g mm (edge of the last active face),"
+          " a_fit = %.5g mm (ellipse fit), face width at a = %.4g mm"
+          % (res["nActive"], res["activeFrom"], res["aNum"] * 1e3, res["aFit"] * 1e3,
+             res["hA"] * 1e3))
+    if res["holes"]:
+        print("  WARNING: %d inactive faces inside the contact strip" % res["holes"])
+    if not 4e-3 <= res["aH"] <= 8e-3:
+        print("  NOTE: a is outside the 5-7 mm the mesh is graded for (DELTA in 0/D)")
+    print("%10s %10s %14s %14s %10s %6s" % ("x [mm]", "x/a", "p [MPa]", "Hertz [MPa]",
+                                             "err/p0", "active"))
+    x, p = np.array(res["x"]), np.array(res["p"])
+    ref = hertz.pressure(x, res["P"], R, res["Es"])
+    show = np.nonzero(x < 1.25 * res["aH"])[0]
+    for i in list(show[::2]) + ([show[-1]] if len(show) % 2 == 0 else []):
+        print("%10.4f %10.4f %14.6g %14.6g %10.4f %6d"
+              % (x[i] * 1e3, x[i] / res["aH"], p[i] / 1e6, ref[i] / 1e6,
+                 (p[i] - ref[i]) / res["p0H"], res["active"][i]))
+    for c in res["checks"]:
+        print("%s %-45s value=%-12.6g ref=%-12.6g err=%-10.4g tol=%.4g"
+              % ("PASS" if c["passed"] else "FAIL", c["name"], c["value"],
+                 c["reference"], c["error"], c["tolerance"]))
+    if args.png:
+        plot(res, os.path.join(args.case, args.png))
+        print("plot: %s" % os.path.join(args.case, args.png))
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(res["checks"], f, indent=1)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
