@@ -6,6 +6,16 @@ plateHole refinement: the Kirsch error at the hole and the whole-field L2
 error for four meshes (each level halves the cell size), the observed
 order between levels, the correctors and the wall time per level, and
 the serial/parallel wall-time ratio on the finest mesh.
+
+hertzCylinder: the peak-pressure and half-width errors against Hertz on a
+coarse and the default mesh (Lagrange multiplier), then on the default
+mesh the outer correctors and wall time of the load step for the
+Lagrange multiplier, the implicit (Robin) penalty and the explicit
+relaxed penalty, with the share of the wall time the contact update
+(search, method, transfer) takes.
+
+The proximity search (CGAL AABB tree, brute force, OpenFOAM's
+indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
 import os
 import re
@@ -21,6 +31,8 @@ sys.path.insert(0, os.path.join(ROOT, "tutorials/plateHole/validation"))
 import numpy as np  # noqa: E402
 from c4fpost import foamio, kirsch  # noqa: E402
 import compareKirsch  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
+import compareHertz  # noqa: E402
 
 PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 WORK = os.path.join(PREFIX, "run", "bench")
@@ -67,8 +79,72 @@ def plate_case(n, parallel=False):
     return dict(n=n, cells=len(C), wall=wall, ncorr=ncorr, e_hole=e_hole, e_l2=e_l2)
 
 
+def hertz_case(name, level=1.0, method="lagrangeMultiplier", implicit=True, ncorr=None):
+    """The hertzCylinder tutorial with every cell count scaled by `level`."""
+    case = os.path.join(WORK, "hertz_" + name)
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(os.path.join(ROOT, "tutorials/hertzCylinder"), case,
+                    ignore=shutil.ignore_patterns("[1-9]*", "processor*", "log.*", "VTK", "*.png"))
+    bmd = os.path.join(case, "system/blockMeshDict")
+    text = open(bmd).read()
+
+    def scale(m):
+        return "%s%d%s" % (m.group(1), max(1, round(int(m.group(2)) * level)), m.group(3))
+    # counts in the multi-grading tuples and the n* macros
+    text = re.sub(r"^\w+Grading\s.*$",
+                  lambda line: re.sub(r"(\(\s*[0-9.]+\s+)(\d+)(\s+[0-9.]+\s*\))", scale, line.group(0)),
+                  text, flags=re.M)
+    text = re.sub(r"^(n\w+\s+)(\d+)(;)", scale, text, flags=re.M)
+    open(bmd, "w").write(text)
+    d = os.path.join(case, "0/D")
+    text = open(d).read()
+    text = re.sub(r"^(\s*method\s+)\w+;", r"\g<1>%s;" % method, text, flags=re.M)
+    if not implicit:
+        text = re.sub(r"^(\s*penaltyScale\s+[^;]+;)", r"\1 implicit no;", text, flags=re.M)
+    open(d, "w").write(text)
+    if ncorr:
+        fvs = os.path.join(case, "system/fvSolution")
+        text = re.sub(r"^(\s*nCorrectors\s+)\d+;", r"\g<1>%d;" % ncorr, open(fvs).read(), flags=re.M)
+        open(fvs, "w").write(text)
+    sh("blockMesh", case)
+    t0 = time.time()
+    log = sh("solidContactFoam", case)
+    wall = time.time() - t0
+    step = re.findall(r"^Time = .*$", log, flags=re.M)[-1]
+    res = compareHertz.compare(case)
+    checks = {c["name"].split("/")[-1]: c for c in res["checks"]}
+    return dict(
+        name=name, level=level, wall=wall,
+        cells=int(re.search(r"^\s*cells:\s+(\d+)", sh("checkMesh -constant", case), flags=re.M).group(1)),
+        ncorr=int(re.search(r"correctors = (\d+)", step).group(1)),
+        residual=float(re.search(r"residual = (\S+)", step).group(1)),
+        contact=float(re.search(r"contactTime = (\S+)", step).group(1)),
+        p0=checks["peak_pressure"]["error"],
+        a=checks["contact_half_width"]["error"],
+        a_tol=checks["contact_half_width"]["tolerance"])
+
+
+def hertz_bench():
+    print("\nhertzCylinder refinement (Lagrange multiplier)")
+    print("%8s %8s %14s %14s %10s %10s" % ("level", "cells", "p0 error", "a error [m]", "correctors", "wall [s]"))
+    for r in (hertz_case("coarse", 0.5), hertz_case("default", 1.0)):
+        print("%8.2f %8d %14.4g %14.4g %10d %10.2f" % (r["level"], r["cells"], r["p0"], r["a"], r["ncorr"], r["wall"]))
+
+    print("\nhertzCylinder, default mesh, one load step: method against method")
+    print("%-22s %10s %12s %10s %14s %10s" % ("method", "correctors", "residual", "wall [s]", "contact share", "p0 error"))
+    rows = [hertz_case("lagrangeMultiplier"),
+            hertz_case("penaltyImplicit", method="penalty"),
+            hertz_case("penaltyExplicit", method="penalty", implicit=False, ncorr=5000)]
+    for r in rows:
+        print("%-22s %10d %12.3g %10.2f %13.1f%% %10.4g" % (r["name"], r["ncorr"], r["residual"], r["wall"],
+                                                          100 * r["contact"] / r["wall"], r["p0"]))
+    print("correctors explicit/implicit penalty: %.1f (explicit capped at 5000; residual shown)"
+          % (rows[2]["ncorr"] / rows[1]["ncorr"]))
+
+
 def main():
     os.makedirs(WORK, exist_ok=True)
+    hertz_bench()
     print("plateHole refinement (Kirsch), serial")
     print("%8s %8s %12s %12s %8s %10s %10s" % ("nRadial", "cells", "err@hole/3T", "L2/T", "order", "correctors", "wall [s]"))
     rows = [plate_case(n) for n in (15, 30, 60, 120)]

@@ -10,6 +10,7 @@
 #include "wedgeFvPatch.H"
 #include "solidPatchTractions.H"
 #include "aitkenRelaxation.H"
+#include "clockTime.H"
 
 #include <algorithm>
 
@@ -298,12 +299,15 @@ const Foam::scalarField& Foam::solidContactFvPatchVectorField::relaxTarget
 
 void Foam::solidContactFvPatchVectorField::updateSlave()
 {
+    const clockTime timer;
+
     const fvMesh& mesh = patch().boundaryMesh().mesh();
     const label timeIndex = mesh.time().timeIndex();
     if (timeIndex != timeIndex_)
     {
         timeIndex_ = timeIndex;
         nCorrectors_ = 0;
+        updateTime_ = 0;
 
         // The last step's target is a good start; its residual history
         // belongs to another load
@@ -390,6 +394,8 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     }
     setOutputFields(pair_->gap(), active);
 
+    updateTime_ += timer.elapsedTime();
+
     if
     (
         mesh.solutionDict().subOrEmptyDict("solidMechanics")
@@ -426,6 +432,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     masterTraction_(),
     timeIndex_(-1),
     nCorrectors_(0),
+    updateTime_(0),
     omega0_(0.3),
     aitken_(true),
     omega_(0.3),
@@ -458,6 +465,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     masterTraction_(),
     timeIndex_(-1),
     nCorrectors_(0),
+    updateTime_(0),
     omega0_(dict.getOrDefault<scalar>("couplingRelaxation", 0.3)),
     aitken_(dict.getOrDefault<bool>("aitken", true)),
     omega_(omega0_),
@@ -525,6 +533,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     masterTraction_(),
     timeIndex_(-1),
     nCorrectors_(0),
+    updateTime_(0),
     omega0_(ptf.omega0_),
     aitken_(ptf.aitken_),
     omega_(ptf.omega0_),
@@ -584,6 +593,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     masterTraction_(ptf.masterTraction_),
     timeIndex_(ptf.timeIndex_),
     nCorrectors_(ptf.nCorrectors_),
+    updateTime_(ptf.updateTime_),
     omega0_(ptf.omega0_),
     aitken_(ptf.aitken_),
     omega_(ptf.omega_),
@@ -684,6 +694,7 @@ Foam::solidContactFvPatchVectorField::contactReport() const
     reduce(r.activeFaces, sumOp<label>());
     r.correctors = returnReduce(nCorrectors_, maxOp<label>());
     r.activeSetChanges = returnReduce(cond_.nChanged, sumOp<label>());
+    r.updateTime = returnReduce(updateTime_, maxOp<scalar>());
     return r;
 }
 
@@ -700,7 +711,8 @@ Foam::string Foam::solidContactFvPatchVectorField::contactState() const
     os  << "F_N = " << r.normalForce
         << "  active = " << r.activeFaces
         << "  maxPenetration = " << r.maxPenetration
-        << "  changes = " << r.activeSetChanges;
+        << "  changes = " << r.activeSetChanges
+        << "  contactTime = " << r.updateTime << " s";
     return os.str();
 }
 
