@@ -47,7 +47,7 @@ for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../sr
     if os.path.isdir(os.path.join(_p, "c4fpost")):
         sys.path.insert(0, _p)
         break
-from c4fpost import foamio, hertz  # noqa: E402
+from c4fpost import foamio, hertz, report  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -238,16 +238,7 @@ def main():
     print("%8s %8s %16s" % ("x", "y", "sigma_yy [Pa]"))
     for x, y, s in zip(res["colX"], res["colY"], res["colSyy"]):
         print("%8.4f %8.4f %16.9g" % (x, y, s))
-    for c in res["checks"]:
-        print("%s %-45s value=%-12.6g ref=%-12.6g err=%-10.4g tol=%.4g"
-              % ("PASS" if c["passed"] else "FAIL", c["name"], c["value"],
-                 c["reference"], c["error"], c["tolerance"]))
-    if args.png:
-        plot(res, os.path.join(args.case, args.png))
-        print("plot: %s" % os.path.join(args.case, args.png))
-    if args.json:
-        with open(args.json, "w") as f:
-            json.dump(res["checks"], f, indent=1)
+    report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

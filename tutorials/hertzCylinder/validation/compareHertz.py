@@ -54,7 +54,7 @@ for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../sr
     if os.path.isdir(os.path.join(_p, "c4fpost")):
         sys.path.insert(0, _p)
         break
-from c4fpost import foamio, hertz  # noqa: E402
+from c4fpost import foamio, hertz, report  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -260,16 +260,7 @@ def main():
         print("%10.4f %10.4f %14.6g %14.6g %10.4f %6d"
               % (x[i] * 1e3, x[i] / res["aH"], p[i] / 1e6, ref[i] / 1e6,
                  (p[i] - ref[i]) / res["p0H"], res["active"][i]))
-    for c in res["checks"]:
-        print("%s %-45s value=%-12.6g ref=%-12.6g err=%-10.4g tol=%.4g"
-              % ("PASS" if c["passed"] else "FAIL", c["name"], c["value"],
-                 c["reference"], c["error"], c["tolerance"]))
-    if args.png:
-        plot(res, os.path.join(args.case, args.png))
-        print("plot: %s" % os.path.join(args.case, args.png))
-    if args.json:
-        with open(args.json, "w") as f:
-            json.dump(res["checks"], f, indent=1)
+    report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

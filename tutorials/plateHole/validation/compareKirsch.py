@@ -30,7 +30,7 @@ for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../sr
     if os.path.isdir(os.path.join(_p, "c4fpost")):
         sys.path.insert(0, _p)
         break
-from c4fpost import foamio, kirsch  # noqa: E402
+from c4fpost import foamio, kirsch, report  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -98,16 +98,7 @@ def main():
     print("%10s %14s %14s %10s" % ("y/R", "sxx [Pa]", "Kirsch [Pa]", "err/3T"))
     for yi, n, k in list(zip(res["y"], res["sxx"], res["kirsch"]))[::3]:
         print("%10.4f %14.6g %14.6g %10.4f" % (yi / R, n, k, abs(n - k) / (3 * T)))
-    for c in res["checks"]:
-        print("%s %-45s value=%-12.6g ref=%-12.6g err=%-10.4g tol=%.4g"
-              % ("PASS" if c["passed"] else "FAIL", c["name"], c["value"],
-                 c["reference"], c["error"], c["tolerance"]))
-    if args.png:
-        plot(res, os.path.join(args.case, args.png))
-        print("plot: %s" % os.path.join(args.case, args.png))
-    if args.json:
-        with open(args.json, "w") as f:
-            json.dump(res["checks"], f, indent=1)
+    report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

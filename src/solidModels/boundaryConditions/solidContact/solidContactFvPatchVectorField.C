@@ -52,6 +52,18 @@ Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& outputField
     return mesh.lookupObjectRef<fieldType>(name);
 }
 
+
+//- The active flags as 1/0, the form they are written and mapped in
+Foam::scalarField activeFraction(const Foam::boolList& active)
+{
+    Foam::scalarField a(active.size(), 0);
+    forAll(active, facei)
+    {
+        a[facei] = active[facei] ? 1 : 0;
+    }
+    return a;
+}
+
 } // End anonymous namespace
 
 
@@ -387,12 +399,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     masterTraction_ =
         pair_->masterForce(traction_*patch().magSf())/master.patch().magSf();
 
-    scalarField active(patch().size(), 0);
-    forAll(active, facei)
-    {
-        active[facei] = cond_.active[facei] ? 1 : 0;
-    }
-    setOutputFields(pair_->gap(), active);
+    setOutputFields(pair_->gap(), activeFraction(cond_.active));
 
     updateTime_ += timer.elapsedTime();
 
@@ -551,13 +558,8 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
         {
             cond_.pressure.map(ptf.cond_.pressure, mapper);
             cond_.explicitPressure.map(ptf.cond_.explicitPressure, mapper);
-            scalarField a(ptf.size(), 0);
-            forAll(a, facei)
-            {
-                a[facei] = ptf.cond_.active[facei] ? 1 : 0;
-            }
             scalarField am(p.size(), 0);
-            am.map(a, mapper);
+            am.map(activeFraction(ptf.cond_.active), mapper);
             forAll(am, facei)
             {
                 cond_.active[facei] = am[facei] > 0.5;
@@ -736,12 +738,7 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
         if (cond_.pressure.size() == patch().size())
         {
             cond_.pressure.writeEntry("contactPressure", os);
-            scalarField a(patch().size(), 0);
-            forAll(a, facei)
-            {
-                a[facei] = cond_.active[facei] ? 1 : 0;
-            }
-            a.writeEntry("contactActive", os);
+            activeFraction(cond_.active).writeEntry("contactActive", os);
         }
     }
     writeEntry("value", os);

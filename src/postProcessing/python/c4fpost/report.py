@@ -1,0 +1,26 @@
+"""What every validation script ends with: one PASS/FAIL line per check,
+the plot, and the checks as JSON for the regression runner (tests/run.py).
+
+A check is a dict with name, passed, value, reference, error, tolerance
+(and optionally units)."""
+import json
+import os
+
+
+def print_checks(checks):
+    for c in checks:
+        print("%s %-45s value=%-12.6g ref=%-12.6g err=%-10.4g tol=%.4g"
+              % ("PASS" if c["passed"] else "FAIL", c["name"], c["value"],
+                 c["reference"], c["error"], c["tolerance"]))
+
+
+def finish(res, case, png, json_path, plot):
+    """Print the checks of `res`, call plot(res, path) when png is set and
+    write the checks to json_path when it is set."""
+    print_checks(res["checks"])
+    if png:
+        plot(res, os.path.join(case, png))
+        print("plot: %s" % os.path.join(case, png))
+    if json_path:
+        with open(json_path, "w") as f:
+            json.dump(res["checks"], f, indent=1)
