@@ -29,7 +29,7 @@ test: build
 	@$(ENV) && $(PY) tests/run.py
 
 bench: build
-	@$(ENV) && $(PY) tests/bench/run.py
+	@$(ENV) && $(PY) tests/bench/run.py && $(PY) tests/bench/searchBench.py
 
 clean:
 	@./Allclean

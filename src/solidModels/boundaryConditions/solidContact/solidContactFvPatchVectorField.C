@@ -103,6 +103,14 @@ void Foam::solidContactFvPatchVectorField::checkPatch
         }
     }
 
+    if (normals_ != "faces" && normals_ != "smoothed")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid normals " << normals_ << " in " << dict.name()
+            << ": valid are faces (the master face normal) and smoothed"
+            << " (interpolated point normals)" << exit(FatalIOError);
+    }
+
     if (shadowPatchName_ == patch().name())
     {
         FatalIOErrorInFunction(dict)
@@ -337,7 +345,11 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
         }
         pair_.reset
         (
-            new contactPatchPair(patch(), master.patch(), searchDistance_)
+            new contactPatchPair
+            (
+                patch(), master.patch(), searchDistance_,
+                normals_ == "smoothed"
+            )
         );
     }
 
@@ -433,6 +445,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     shadowPatchName_(),
     master_(false),
     searchDistance_(-1),
+    normals_("faces"),
     method_(),
     pair_(),
     cond_(),
@@ -466,6 +479,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     shadowPatchName_(dict.get<word>("shadowPatch")),
     master_(dict.get<bool>("master")),
     searchDistance_(dict.getOrDefault<scalar>("searchDistance", -1)),
+    normals_(dict.getOrDefault<word>("normals", "faces")),
     method_(),
     pair_(),
     cond_(),
@@ -534,6 +548,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     shadowPatchName_(ptf.shadowPatchName_),
     master_(ptf.master_),
     searchDistance_(ptf.searchDistance_),
+    normals_(ptf.normals_),
     method_(),
     pair_(),
     cond_(),
@@ -589,6 +604,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     shadowPatchName_(ptf.shadowPatchName_),
     master_(ptf.master_),
     searchDistance_(ptf.searchDistance_),
+    normals_(ptf.normals_),
     method_(),
     pair_(),
     cond_(ptf.cond_),
@@ -730,6 +746,7 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
         os.writeEntry("method", method_->methodName());
         method_->write(os);
         os.writeEntry("couplingRelaxation", omega0_);
+        os.writeEntry("normals", normals_);
         os.writeEntry("aitken", Switch(aitken_));
         if (dict_.found("searchDistance"))
         {

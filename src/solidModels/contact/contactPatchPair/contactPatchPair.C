@@ -16,12 +16,14 @@ Foam::contactPatchPair::contactPatchPair
 (
     const fvPatch& slave,
     const fvPatch& master,
-    const scalar searchDistance
+    const scalar searchDistance,
+    const bool smoothNormals
 )
 :
     slave_(slave),
     master_(master),
     searchDistance_(searchDistance),
+    smoothNormals_(smoothNormals),
     masterStart_(0),
     hitFace_(slave.size(), -1),
     hitNormal_(slave.size(), Zero),
@@ -148,12 +150,60 @@ void Foam::contactPatchPair::moveMaster(const vectorField& masterD)
     }
 
     masterNormals_.resize(masterFaces_.size());
+    std::vector<Eigen::Vector3d> areas(masterFaces_.size());
     forAll(masterRefFaces_, facei)
     {
         const std::vector<Eigen::Vector3d> poly(masterPolygon(facei));
-        masterNormals_[facei] =
-            c4f::transfer::polygonPlane(poly).normal;
+        areas[facei] = c4f::transfer::areaVector(poly);
+        masterNormals_[facei] = c4f::transfer::polygonPlane(poly).normal;
     }
+
+    if (smoothNormals_)
+    {
+        masterPointNormals_.assign
+        (
+            masterPoints_.size(), Eigen::Vector3d::Zero()
+        );
+        forAll(masterPointFaces_, pointi)
+        {
+            Eigen::Vector3d n(Eigen::Vector3d::Zero());
+            for (const label facei : masterPointFaces_[pointi])
+            {
+                n += areas[facei];
+            }
+            const double mag = n.norm();
+            masterPointNormals_[pointi] = mag > 0 ? Eigen::Vector3d(n/mag) : n;
+        }
+    }
+}
+
+
+Eigen::Vector3d Foam::contactPatchPair::normalAt
+(
+    const label facei,
+    const Eigen::Vector3d& x
+) const
+{
+    if (!smoothNormals_)
+    {
+        return masterNormals_[facei];
+    }
+
+    const std::vector<int>& f = masterFaces_[facei];
+    const double tiny = 1e-12*(masterPoints_[f[0]] - masterPoints_[f[1]]).norm();
+
+    Eigen::Vector3d n(Eigen::Vector3d::Zero());
+    for (const int v : f)
+    {
+        const double d = (x - masterPoints_[v]).norm();
+        if (d <= tiny)
+        {
+            return masterPointNormals_[v];
+        }
+        n += masterPointNormals_[v]/d;
+    }
+    const double mag = n.norm();
+    return mag > 0 ? Eigen::Vector3d(n/mag) : masterNormals_[facei];
 }
 
 
@@ -220,7 +270,7 @@ void Foam::contactPatchPair::update
         if (hit.found)
         {
             hitFace_[facei] = hit.face;
-            const Eigen::Vector3d& n = masterNormals_[hit.face];
+            const Eigen::Vector3d n(normalAt(hit.face, hit.point));
             hitNormal_[facei] = c4fConvert::toFoam(n);
             gap_[facei] = (q - hit.point).dot(n);
         }
