@@ -161,6 +161,32 @@ def contact_serial_parallel_agree(res, serial, parallel, name, tol):
         res.add("%s/%s_equals_serial" % (name, what), err <= tol, p[col], s[col], err, tol)
 
 
+def restart_reproduces(res, finished, name):
+    """Continue a finished one-step run for a second step at the same load:
+    with the contact state written with the time (active set, pressure,
+    master force, direction-mixed coefficients) it must start converged.
+    2 correctors is what it takes (the first solve's residual is the
+    written precision's, 6e-9 here); 5 leaves margin, a lost state takes
+    hundreds."""
+    case = finished + "_restart"
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(finished, case, ignore=shutil.ignore_patterns("processor*", "VTK", "log.*"))
+    cd = os.path.join(case, "system/controlDict")
+    text = re.sub(r"^endTime\s+[^;]+;", "endTime 2;", open(cd).read(), flags=re.M)
+    text = re.sub(r"^startFrom\s+[^;]+;", "startFrom latestTime;", text, flags=re.M)
+    open(cd, "w").write(text)
+    rc, out = run(["solidContactFoam"], cwd=case, log=os.path.join(case, "log.solidContactFoam"))
+    steps = re.findall(r"^Time = (\S+)\s+correctors = (\d+).*F_N = (\S+)", out, flags=re.M)
+    if rc or len(steps) != 1 or steps[0][0] != "2":
+        res.add(name + "/run", False, note="rc=%d, steps %s, see %s" % (rc, steps, case))
+        return
+    first = re.findall(r"F_N = (\S+)", open(os.path.join(finished, "log.solidContactFoam")).read())[-1]
+    ncorr, f1, f2 = int(steps[0][1]), float(first), float(steps[0][2])
+    res.add(name + "/correctors", ncorr <= 5, ncorr, 2, ncorr - 2, 3)
+    err = abs(f2 - f1) / abs(f1)
+    res.add(name + "/normal_force_equals_step_1", err <= 1e-6, f2, f1, err, 1e-6)
+
+
 def decomposed(res, case, name, nprocs):
     log = open(os.path.join(case, "log.solidContactFoam")).read()
     ok = ("nProcs : %d" % nprocs) in log and os.path.isdir(os.path.join(case, "processor1"))
@@ -237,6 +263,8 @@ def main():
         vtk_written(res, cases["lagrangeMultiplier"], "hertzCylinder_lagrangeMultiplier",
                     ["D", "sigma", "contactPressure", "contactGap", "contactTraction",
                      "contactActive"])
+        print("== hertzCylinder: restart from the written time", flush=True)
+        restart_reproduces(res, cases["lagrangeMultiplier"], "hertzCylinderRestart")
         print("== hertzCylinder: 2 processors, contact zone cut at x = 3 mm", flush=True)
         par = tutorial_case(res, "hertzCylinder", "hertzCylinderParallel",
                             ["-method", "lagrangeMultiplier", "-parallel"])

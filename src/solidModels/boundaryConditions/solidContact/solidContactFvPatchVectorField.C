@@ -507,6 +507,12 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
 
     if (master_)
     {
+        // A restart continues from the written force
+        if (dict.found("contactTraction"))
+        {
+            traction_ = vectorField("contactTraction", dict, p.size());
+        }
+
         if (dict.found("method"))
         {
             FatalIOErrorInFunction(dict)
@@ -529,9 +535,22 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
         fvPatchVectorField::operator=(patchInternalField());
     }
 
-    refValue() = *this;
-    refGrad() = Zero;
-    valueFraction() = Zero;
+    // A restart continues from the written direction-mixed state, so that
+    // the face gradient, and with it the reaction read back in the first
+    // corrector, is the one the run was written with
+    if (dict.found("valueFraction"))
+    {
+        refValue() = vectorField("refValue", dict, p.size());
+        refGrad() = vectorField("refGradient", dict, p.size());
+        valueFraction() =
+            symmTensorField("valueFraction", dict, p.size());
+    }
+    else
+    {
+        refValue() = *this;
+        refGrad() = Zero;
+        valueFraction() = Zero;
+    }
 }
 
 
@@ -564,9 +583,11 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     traction_(p.size(), Zero),
     pressure_(p.size(), 0)
 {
+    // The mapped (e.g. decomposed) patch starts from the mapped state
+    traction_.map(ptf.traction_, mapper);
+
     if (!master_)
     {
-        // The mapped (e.g. decomposed) patch starts from the mapped state
         method_ = contactMethod::New(patch(), dict_);
         cond_.setSize(p.size());
         if (ptf.cond_.pressure.size() == ptf.size())
@@ -640,11 +661,12 @@ void Foam::solidContactFvPatchVectorField::updateCoeffs()
     {
         const solidContactFvPatchVectorField& slave = shadow();
 
-        // Before the slave's first update there is no force yet
-        traction_ =
-            slave.masterTraction().size() == patch().size()
-          ? slave.masterTraction()
-          : vectorField(patch().size(), Zero);
+        // Before the slave's first update the force is the one written
+        // with the time started from (zero at a fresh start)
+        if (slave.masterTraction().size() == patch().size())
+        {
+            traction_ = slave.masterTraction();
+        }
         pressure_ = -(traction_ & patch().nf());
 
         valueFraction() = Zero;
@@ -741,7 +763,11 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("shadowPatch", shadowPatchName_);
     os.writeEntry("master", Switch(master_));
 
-    if (!master_)
+    if (master_)
+    {
+        traction_.writeEntry("contactTraction", os);
+    }
+    else
     {
         os.writeEntry("method", method_->methodName());
         method_->write(os);
@@ -758,6 +784,9 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
             activeFraction(cond_.active).writeEntry("contactActive", os);
         }
     }
+    refValue().writeEntry("refValue", os);
+    refGrad().writeEntry("refGradient", os);
+    valueFraction().writeEntry("valueFraction", os);
     writeEntry("value", os);
 }
 

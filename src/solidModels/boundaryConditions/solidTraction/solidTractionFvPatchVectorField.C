@@ -47,7 +47,13 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     {
         fvPatchVectorField::operator=(patchInternalField());
     }
-    gradient() = Zero;
+
+    // A restart continues from the written gradient, so that the face
+    // stress of its first corrector is the one the run was written with
+    gradient() =
+        dict.found("gradient")
+      ? vectorField("gradient", dict, p.size())
+      : vectorField(p.size(), Zero);
 }
 
 
@@ -146,6 +152,7 @@ void Foam::solidTractionFvPatchVectorField::write(Ostream& os) const
     {
         pressure_->writeData(os);
     }
+    gradient().writeEntry("gradient", os);
     writeEntry("value", os);
 }
 
