@@ -111,6 +111,15 @@ void Foam::solidContactFvPatchVectorField::checkPatch
             << " (interpolated point normals)" << exit(FatalIOError);
     }
 
+    if (!(rebuildTolerance_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid rebuildTolerance " << rebuildTolerance_ << " in "
+            << dict.name() << ": it must be a length >= 0 [m]"
+            << " (0 rebuilds the search tree every corrector)"
+            << exit(FatalIOError);
+    }
+
     if (shadowPatchName_ == patch().name())
     {
         FatalIOErrorInFunction(dict)
@@ -348,7 +357,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
             new contactPatchPair
             (
                 patch(), master.patch(), searchDistance_,
-                normals_ == "smoothed"
+                normals_ == "smoothed", rebuildTolerance_
             )
         );
     }
@@ -446,6 +455,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     master_(false),
     searchDistance_(-1),
     normals_("faces"),
+    rebuildTolerance_(0),
     method_(),
     pair_(),
     cond_(),
@@ -480,6 +490,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     master_(dict.get<bool>("master")),
     searchDistance_(dict.getOrDefault<scalar>("searchDistance", -1)),
     normals_(dict.getOrDefault<word>("normals", "faces")),
+    rebuildTolerance_(dict.getOrDefault<scalar>("rebuildTolerance", 0)),
     method_(),
     pair_(),
     cond_(),
@@ -568,6 +579,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     master_(ptf.master_),
     searchDistance_(ptf.searchDistance_),
     normals_(ptf.normals_),
+    rebuildTolerance_(ptf.rebuildTolerance_),
     method_(),
     pair_(),
     cond_(),
@@ -626,6 +638,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     master_(ptf.master_),
     searchDistance_(ptf.searchDistance_),
     normals_(ptf.normals_),
+    rebuildTolerance_(ptf.rebuildTolerance_),
     method_(),
     pair_(),
     cond_(ptf.cond_),
@@ -773,6 +786,7 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
         method_->write(os);
         os.writeEntry("couplingRelaxation", omega0_);
         os.writeEntry("normals", normals_);
+        os.writeEntry("rebuildTolerance", rebuildTolerance_);
         os.writeEntry("aitken", Switch(aitken_));
         if (dict_.found("searchDistance"))
         {

@@ -17,7 +17,8 @@ Foam::contactPatchPair::contactPatchPair
     const fvPatch& slave,
     const fvPatch& master,
     const scalar searchDistance,
-    const bool smoothNormals
+    const bool smoothNormals,
+    const scalar rebuildTolerance
 )
 :
     slave_(slave),
@@ -25,8 +26,12 @@ Foam::contactPatchPair::contactPatchPair
     searchDistance_(searchDistance),
     smoothNormals_(smoothNormals),
     masterStart_(0),
+    rebuildTolerance_(rebuildTolerance),
+    staleness_(0),
+    nBuilds_(0),
     hitFace_(slave.size(), -1),
     hitNormal_(slave.size(), Zero),
+    hitLocal_(slave.size(), vector2D::zero),
     gap_(slave.size(), GREAT),
     inRange_(slave.size(), false)
 {}
@@ -207,6 +212,57 @@ Eigen::Vector3d Foam::contactPatchPair::normalAt
 }
 
 
+c4f::search::SearchHit Foam::contactPatchPair::closest
+(
+    const Eigen::Vector3d& q
+) const
+{
+    if (staleness_ == 0)
+    {
+        return search_.closest(q, searchDistance_);
+    }
+
+    const c4f::search::SearchHit stale =
+        search_.closest(q, searchDistance_ + staleness_);
+    if (!stale.found)
+    {
+        return stale;
+    }
+
+    const double grow = stale.distance + 2*staleness_;
+    const std::vector<int> cand
+    (
+        search_.facesInBox
+        (
+            q - Eigen::Vector3d::Constant(grow),
+            q + Eigen::Vector3d::Constant(grow)
+        )
+    );
+
+    // The candidates as a small surface of their own, current points
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<std::vector<int>> faces;
+    for (const int facei : cand)
+    {
+        std::vector<int> f;
+        for (const int v : masterFaces_[facei])
+        {
+            f.push_back(int(pts.size()));
+            pts.push_back(masterPoints_[v]);
+        }
+        faces.push_back(f);
+    }
+
+    c4f::search::SearchHit hit =
+        c4f::search::bruteForceClosest(pts, faces, q, searchDistance_);
+    if (hit.found)
+    {
+        hit.face = cand[hit.face];
+    }
+    return hit;
+}
+
+
 std::vector<Eigen::Vector3d>
 Foam::contactPatchPair::masterPolygon(const label facei) const
 {
@@ -249,9 +305,26 @@ void Foam::contactPatchPair::update
     }
     moveMaster(masterD);
 
-    // CGAL has no refit: the tree is rebuilt in every corrector (see
-    // make bench for what it costs against the solve)
-    search_.build(masterPoints_, masterFaces_);
+    staleness_ = 0;
+    if (builtPoints_.size() == masterPoints_.size())
+    {
+        for (size_t i = 0; i < masterPoints_.size(); ++i)
+        {
+            staleness_ =
+                max(staleness_, (masterPoints_[i] - builtPoints_[i]).norm());
+        }
+    }
+    if
+    (
+        builtPoints_.size() != masterPoints_.size()
+     || staleness_ > rebuildTolerance_
+    )
+    {
+        search_.build(masterPoints_, masterFaces_);
+        builtPoints_ = masterPoints_;
+        staleness_ = 0;
+        ++nBuilds_;
+    }
 
     const labelList& smp = slave_.patch().meshPoints();
     slavePoints_ =
@@ -263,8 +336,7 @@ void Foam::contactPatchPair::update
     forAll(x, facei)
     {
         const Eigen::Vector3d q(c4fConvert::toEigen(x[facei]));
-        const c4f::search::SearchHit hit =
-            search_.closest(q, searchDistance_);
+        const c4f::search::SearchHit hit = closest(q);
 
         inRange_[facei] = hit.found;
         if (hit.found)
@@ -273,6 +345,21 @@ void Foam::contactPatchPair::update
             const Eigen::Vector3d n(normalAt(hit.face, hit.point));
             hitNormal_[facei] = c4fConvert::toFoam(n);
             gap_[facei] = (q - hit.point).dot(n);
+
+            const std::vector<int>& f = masterFaces_[hit.face];
+            Eigen::Vector3d c(Eigen::Vector3d::Zero());
+            for (const int v : f)
+            {
+                c += masterPoints_[v];
+            }
+            c /= double(f.size());
+            const Eigen::Vector3d t1
+            (
+                (masterPoints_[f[1]] - masterPoints_[f[0]]).normalized()
+            );
+            const Eigen::Vector3d t2(masterNormals_[hit.face].cross(t1));
+            hitLocal_[facei] =
+                vector2D((hit.point - c).dot(t1), (hit.point - c).dot(t2));
         }
         else
         {
@@ -308,7 +395,8 @@ Foam::tmp<Foam::vectorField> Foam::contactPatchPair::masterForce
             lo = lo.cwiseMin(p);
             hi = hi.cwiseMax(p);
         }
-        const double grow = mag(gap_[facei]) + 1e-6*(hi - lo).norm();
+        const double grow =
+            mag(gap_[facei]) + staleness_ + 1e-6*(hi - lo).norm();
         lo.array() -= grow;
         hi.array() += grow;
 
@@ -341,7 +429,7 @@ Foam::tmp<Foam::vectorField> Foam::contactPatchPair::masterForce
         }
         else
         {
-            forAll(cand, k)
+            for (size_t k = 0; k < cand.size(); ++k)
             {
                 F[cand[k]] -= w[k]*slaveForce[facei];
             }
