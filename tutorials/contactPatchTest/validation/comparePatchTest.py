@@ -47,7 +47,7 @@ for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../sr
     if os.path.isdir(os.path.join(_p, "c4fpost")):
         sys.path.insert(0, _p)
         break
-from c4fpost import foamio, hertz, report  # noqa: E402
+from c4fpost import foamio, hertz, report, contactreport  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -56,38 +56,6 @@ L = 1.0         # height of the two-block column [m], system/blockMeshDict
 SLAVE = "lowerTop"
 MASTER = "upperBottom"
 EXACT_TOL = 1e-6
-
-
-def contact_report(case, patch):
-    """Last row of postProcessing/contactReport/<t>/<patch>.dat as a dict
-    (column names from the '#' header), or None."""
-    base = os.path.join(case, "postProcessing", "contactReport")
-    if not os.path.isdir(base):
-        return None
-    names, row = None, None
-    for d in sorted(os.listdir(base)):
-        path = os.path.join(base, d, patch + ".dat")
-        if not os.path.exists(path):
-            continue
-        for line in open(path):
-            s = line.strip()
-            if s.startswith("#"):
-                words = s.lstrip("#").split()
-                if "normalForce" in words:
-                    names = words
-            elif s:
-                row = s.split()
-    if row is None:
-        return None
-    names = names or ["time", "normalForce", "tangentialForce", "contactArea",
-                      "maxPressure", "maxPenetration", "activeFaces", "outerCorrectors"]
-    out = {}
-    for k, v in zip(names, row):
-        try:
-            out[k] = float(v)
-        except ValueError:
-            pass
-    return out
 
 
 def compare(case):
@@ -146,7 +114,7 @@ def compare(case):
     Fref = abs(predicted) * float(area.sum())
     checks.append(dict(name="contactPatchTest/contact_force", value=F, reference=Fref,
                        error=abs(F - Fref) / Fref, tolerance=forceTol, units="N"))
-    rep = contact_report(case, SLAVE)
+    rep = contactreport.last_row(case, SLAVE)
     if rep and "normalForce" in rep:
         Fr = rep["normalForce"]
         checks.append(dict(name="contactPatchTest/contactReport_normalForce", value=Fr,

@@ -54,7 +54,7 @@ for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../sr
     if os.path.isdir(os.path.join(_p, "c4fpost")):
         sys.path.insert(0, _p)
         break
-from c4fpost import foamio, hertz, report  # noqa: E402
+from c4fpost import foamio, hertz, report, contactreport  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -62,40 +62,6 @@ R = 0.1                   # cylinder radius [m], system/blockMeshDict
 SLAVE = "cylinderContact"
 P0_TOL = 0.03             # fraction of the Hertz peak pressure
 A_TOL_FACES = 1.5         # slave face widths at x = a
-
-
-def _contact_report(case, patch):
-    """Last row of postProcessing/contactReport/<t>/<patch>.dat as a dict,
-    or None."""
-    base = os.path.join(case, "postProcessing", "contactReport")
-    if not os.path.isdir(base):
-        return None
-    rows, names = None, None
-    for d in sorted(os.listdir(base), key=lambda s: float(s) if s.replace(".", "", 1).isdigit() else -1):
-        path = os.path.join(base, d, patch + ".dat")
-        if not os.path.exists(path):
-            continue
-        for line in open(path):
-            s = line.strip()
-            if not s:
-                continue
-            if s.startswith("#"):
-                words = s.lstrip("#").split()
-                if "normalForce" in words:
-                    names = words
-                continue
-            rows = s.split()
-    if rows is None:
-        return None
-    names = names or ["time", "normalForce", "tangentialForce", "contactArea",
-                      "maxPressure", "maxPenetration", "activeFaces", "outerCorrectors"]
-    out = {}
-    for k, v in zip(names, rows):
-        try:
-            out[k] = float(v)
-        except ValueError:
-            pass
-    return out
 
 
 def no_contact(time, wx):
@@ -164,7 +130,7 @@ def compare(case):
     if os.path.exists(tPath):
         tr = foamio.read_patch(tPath, SLAVE, n)[order]
         extra["P_contactTraction"] = 2.0 * float(np.sum(tr[:, 1] * area)) / dz
-    rep = _contact_report(case, SLAVE)
+    rep = contactreport.last_row(case, SLAVE)
     if rep and "normalForce" in rep:
         extra["P_contactReport"] = 2.0 * rep["normalForce"] / dz
         extra["report"] = rep
