@@ -35,7 +35,6 @@ Both: the total normal force on the slave patch, sum_f p_f |Sf_f|, against
 tolerance as the stress; and, when the contactReport function object wrote
 postProcessing/contactReport/*/lowerTop.dat, its last normalForce likewise.
 """
-import argparse
 import json
 import os
 import sys
@@ -184,11 +183,7 @@ def plot(res, png):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("case", nargs="?", default=".")
-    ap.add_argument("--json", help="write the checks to this file")
-    ap.add_argument("--png", default="patchTest.png")
-    args = ap.parse_args()
+    args = report.parse_args(__doc__, "patchTest.png")
     res = compare(args.case)
     print("contactPatchTest: sigma_yy over all cells (time %s, method %s)"
           % (res["time"], res["method"]))

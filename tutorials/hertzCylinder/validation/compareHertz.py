@@ -42,7 +42,6 @@ Checks:
   The interpolated zero of a p^2 = p0^2 (1 - x^2/a^2) least-squares fit over
   the active faces is printed as a second estimate of a (not checked).
 """
-import argparse
 import json
 import os
 import sys
@@ -187,11 +186,7 @@ def plot(res, png):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("case", nargs="?", default=".")
-    ap.add_argument("--json", help="write the checks to this file")
-    ap.add_argument("--png", default="hertzPressure.png")
-    args = ap.parse_args()
+    args = report.parse_args(__doc__, "hertzPressure.png")
     res = compare(args.case)
     if res["P"] <= 0:
         for c in res["checks"]:

@@ -18,7 +18,6 @@ Tolerance on max |sigma_xx - Kirsch| / (3T) along the line:
     floor, which 0.5 bounds with margin.
   The default mesh (h1/R = 0.082) measures 3.6 % against 6.6 %.
 """
-import argparse
 import json
 import os
 import sys
@@ -87,11 +86,7 @@ def plot(result, png):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("case", nargs="?", default=".")
-    ap.add_argument("--json", help="write the checks to this file")
-    ap.add_argument("--png", default="plateHole.png")
-    args = ap.parse_args()
+    args = report.parse_args(__doc__, "plateHole.png")
     res = compare(args.case)
     print("plateHole: sigma_xx on x = 0 against Kirsch (time %s, h1/R = %.4f)"
           % (res["time"], res["h1"] / R))

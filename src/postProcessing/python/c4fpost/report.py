@@ -3,8 +3,19 @@ the plot, and the checks as JSON for the regression runner (tests/run.py).
 
 A check is a dict with name, passed, value, reference, error, tolerance
 (and optionally units)."""
+import argparse
 import json
 import os
+
+
+def parse_args(doc, png):
+    """The command line every validation script takes: the case directory,
+    --json for the regression runner, --png for the plot's file name."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
+    ap.add_argument("case", nargs="?", default=".")
+    ap.add_argument("--json", help="write the checks to this file")
+    ap.add_argument("--png", default=png)
+    return ap.parse_args()
 
 
 def print_checks(checks):

@@ -64,6 +64,18 @@ Foam::scalarField activeFraction(const Foam::boolList& active)
     return a;
 }
 
+
+//- The active flags back from their 1/0 form (mapped values may blend)
+Foam::boolList activeFlags(const Foam::scalarField& a)
+{
+    Foam::boolList active(a.size());
+    forAll(a, facei)
+    {
+        active[facei] = a[facei] > 0.5;
+    }
+    return active;
+}
+
 } // End anonymous namespace
 
 
@@ -262,11 +274,10 @@ void Foam::solidContactFvPatchVectorField::initSlave()
     }
     if (dict_.found("contactActive"))
     {
-        const scalarField a("contactActive", dict_, patch().size());
-        forAll(a, facei)
-        {
-            cond_.active[facei] = a[facei] > 0.5;
-        }
+        cond_.active = activeFlags
+        (
+            scalarField("contactActive", dict_, patch().size())
+        );
     }
 }
 
@@ -608,10 +619,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
             cond_.explicitPressure.map(ptf.cond_.explicitPressure, mapper);
             scalarField am(p.size(), 0);
             am.map(activeFraction(ptf.cond_.active), mapper);
-            forAll(am, facei)
-            {
-                cond_.active[facei] = am[facei] > 0.5;
-            }
+            cond_.active = activeFlags(am);
         }
     }
 }

@@ -66,6 +66,40 @@ void planeBasis(const V& n, V& e1, V& e2)
     e2 = n.cross(e1);
 }
 
+//- The overlaps of one slave face with every master face must tile the
+//  slave's shadow on `plane`, and its weights must sum to one; the shadow
+//  and the overlap sum are added to the running totals
+void checkSlaveFace
+(
+    const Polygon& s,
+    const std::vector<Polygon>& master,
+    const Plane& plane,
+    std::vector<double>& w,
+    double& shadowTotal,
+    double& overlapTotal
+)
+{
+    std::vector<double> A;
+    double sumA = 0;
+    for (const Polygon& m : master)
+    {
+        A.push_back(overlapArea(s, m));
+        sumA += A.back();
+    }
+    const double shadow = polygonArea(projectOntoPlane(s, plane));
+    EXPECT_NEAR(sumA, shadow, 1e-12*shadow);
+    shadowTotal += shadow;
+    overlapTotal += sumA;
+
+    w = conservativeWeights(A);
+    double sw = 0;
+    for (const double x : w)
+    {
+        sw += x;
+    }
+    EXPECT_NEAR(sw, 1.0, 1e-15);
+}
+
 } // End anonymous namespace
 
 
@@ -506,26 +540,12 @@ TEST(ConservativeTransfer, tiledStripCarriesTheTotalForce)
 
     for (const Polygon& s : slave)
     {
-        std::vector<double> A;
-        double sumA = 0;
-        for (const Polygon& m : master)
-        {
-            A.push_back(overlapArea(s, m));
-            sumA += A.back();
-        }
-        const double shadow = polygonArea(projectOntoPlane(s, polygonPlane(master[0])));
-        EXPECT_NEAR(sumA, shadow, 1e-12*shadow);
-        slaveShadow += shadow;
-        overlapTotal += sumA;
-
-        const std::vector<double> w = conservativeWeights(A);
+        std::vector<double> w;
+        checkSlaveFace
+        (
+            s, master, polygonPlane(master[0]), w, slaveShadow, overlapTotal
+        );
         ASSERT_EQ(w.size(), master.size());
-        double sw = 0;
-        for (const double x : w)
-        {
-            sw += x;
-        }
-        EXPECT_NEAR(sw, 1.0, 1e-15);
 
         for (const V& f : {V(0, 1, 0), V(u(gen), u(gen), u(gen))})
         {
@@ -623,26 +643,10 @@ TEST(ConservativeTransfer, randomTilingOfATiltedPlane)
         for (int j = 0; j < Ns; ++j)
         {
             const Polygon s{ps[i][j], ps[i][j + 1], ps[i + 1][j + 1], ps[i + 1][j]};
-            std::vector<double> A;
-            double sumA = 0;
-            for (const Polygon& m : master)
-            {
-                A.push_back(overlapArea(s, m));
-                sumA += A.back();
-            }
-            const double shadow = polygonArea(projectOntoPlane(s, plane));
-            EXPECT_NEAR(sumA, shadow, 1e-12*shadow) << i << " " << j;
-            shadowTotal += shadow;
-            overlapTotal += sumA;
-
-            const std::vector<double> w = conservativeWeights(A);
+            SCOPED_TRACE(testing::Message() << "slave face " << i << " " << j);
+            std::vector<double> w;
+            checkSlaveFace(s, master, plane, w, shadowTotal, overlapTotal);
             ASSERT_EQ(w.size(), master.size());
-            double sw = 0;
-            for (const double x : w)
-            {
-                sw += x;
-            }
-            EXPECT_NEAR(sw, 1.0, 1e-15);
 
             const V f(u(gen), u(gen), 1 + u(gen));
             fSlave += f;
