@@ -110,11 +110,50 @@ def tutorial_case(res, tutorial, name, args=()):
                 note="Allrun failed (rc=%d), see %s/log.*" % (rc, case))
         return case
     res.add("%s/Allrun" % name, True, note="(%.1f s)" % wall)
+    steps_converged(res, case, name)
     checks = json.load(open(checks_json))
     for c in checks:
         c["name"] = c["name"].replace(tutorial + "/", name + "/", 1)
     res.add_checks(checks)
     return case
+
+
+def steps_converged(res, case, name):
+    """Every load step of the solver's log converged (no 'NOT CONVERGED'
+    step line, the run reached End) and, where there is a contactReport,
+    its last row says converged = 1."""
+    log = os.path.join(case, "log.solidContactFoam")
+    text = open(log).read() if os.path.exists(log) else ""
+    steps = re.findall(r"^Time = \S+\s+correctors = (\d+)\s+residual = \S+(.*)$", text, flags=re.M)
+    bad = [s for s in steps if "NOT CONVERGED" in s[1]]
+    ok = bool(steps) and not bad and re.search(r"^End\s*$", text, flags=re.M) is not None
+    for d in (os.listdir(os.path.join(case, "postProcessing", "contactReport", "0"))
+              if os.path.isdir(os.path.join(case, "postProcessing", "contactReport", "0")) else []):
+        row = contactreport.last_row(case, os.path.splitext(d)[0])
+        if row is None or row.get("converged") != 1:
+            ok = False
+    res.add("%s/steps_converged" % name, ok,
+            note="(%d steps, correctors %s)" % (len(steps), ",".join(s[0] for s in steps))
+            if ok else "not converged: see %s" % log)
+
+
+def accept_unconverged(res):
+    """onNonConvergence continue: a step cut short at 3 correctors is
+    written, the log warns, and contactReport says converged = 0."""
+    name = "contactPatchTestContinue"
+    case = fresh_copy("contactPatchTest", name)
+    fv = os.path.join(case, "system/fvSolution")
+    text = re.sub(r"^(\s*)nCorrectors\s+\d+;", r"\1nCorrectors 3; onNonConvergence continue;",
+                  open(fv).read(), flags=re.M)
+    open(fv, "w").write(text)
+    run(["blockMesh"], cwd=case, log=os.path.join(case, "log.blockMesh"))
+    rc, out = run(["solidContactFoam"], cwd=case, log=os.path.join(case, "log.solidContactFoam"))
+    row = contactreport.last_row(case, "lowerTop")
+    ok = (rc == 0 and os.path.isdir(os.path.join(case, "1")) and "NOT CONVERGED" in out
+          and "going on (onNonConvergence continue)" in out
+          and row is not None and row.get("converged") == 0)
+    res.add(name + "/written_and_flagged", ok,
+            note="(rc=%d, converged column %s)" % (rc, None if row is None else row.get("converged")))
 
 
 def vtk_written(res, case, name, fields):
@@ -248,6 +287,8 @@ def main():
             print("== contactPatchTest: non-matching interface, %s" % method, flush=True)
             tutorial_case(res, "contactPatchTest", "contactPatchTest_" + method,
                           ["-method", method])
+        print("== contactPatchTest: onNonConvergence continue", flush=True)
+        accept_unconverged(res)
 
     if want("hertzCylinder"):
         cases = {}

@@ -52,6 +52,15 @@ CASES = [
     ("negativeTolerance", "plateHole",
      [("system/fvSolution", r"^(\s*)tolerance\s+1e-9;", r"\1tolerance -1;")],
      ["FOAM FATAL IO ERROR", "Entry 'tolerance' = -1", "> 0", "fvSolution"]),
+    ("invalidOnNonConvergence", "plateHole",
+     [("system/fvSolution", r"^(\s*)tolerance\s+1e-9;", r"\1tolerance 1e-9; onNonConvergence ignore;")],
+     ["FOAM FATAL IO ERROR", "Entry 'onNonConvergence' = ignore", "stop", "continue",
+      "fvSolution"]),
+    # A load step that does not converge stops the run, writing nothing of it
+    ("stepNotConverged", "contactPatchTest",
+     [("system/fvSolution", r"^(\s*)nCorrectors\s+\d+;", r"\1nCorrectors 3;")],
+     ["FOAM FATAL ERROR", "Load step at time 1 did not converge in nCorrectors = 3",
+      "Contact state:", "F_N =", "onNonConvergence"]),
     # Contact pair entries (contactPatchTest: slave lowerTop, master upperBottom)
     ("shadowPatchMissing", "contactPatchTest",
      [("0/D", r"^(\s*)shadowPatch\s+upperBottom;", r"\1shadowPatch upperBotom;")],

@@ -22,11 +22,23 @@ Description
     updated inside every corrector, so each corrector alternates the
     displacement solve with the traction/contact update.
 
-    The correctors stop when the normalised initial residual of the D
-    equation (OpenFOAM's residual, max over solved components) drops below
-    `tolerance`, or after `nCorrectors`. Components whose magnitude stays
-    below 1e-10 of the largest are left out: their normalised residual is
-    round-off noise.
+    A load step has converged when, after an outer corrector,
+      - the normalised initial residual of the D equation (OpenFOAM's
+        residual, max over solved components) is below `tolerance`: the
+        boundary conditions, the contact conditions among them, were
+        updated before that solve, so the residual holds their face values;
+      - no contact patch changed its active set in that corrector;
+      - the total normal force of every contact patch changed by less than
+        `tolerance` relative in that corrector.
+    Components of D whose magnitude stays below 1e-10 of the largest are
+    left out of the residual: their normalised residual is round-off
+    noise.
+
+    A step that has not converged in `nCorrectors` stops the run with a
+    FatalError naming the time, the residual and the contact state; the
+    step is not written, so the last time on disk is the last converged
+    one. `onNonConvergence continue` warns and goes on instead (the step is
+    then written and contactReport's `converged` column shows 0).
 
     Each step prints one summary line:
         Time = <t>  correctors = <n>  residual = <r>  [contact state]
@@ -38,6 +50,7 @@ Usage
         nCorrectors   | max outer correctors per load step     | yes      |
         tolerance     | residual to stop at (> 0)              | yes      |
         verbose       | print every corrector's residual       | no       | no
+        onNonConvergence | stop or continue                    | no       | stop
     \endtable
 
     \verbatim
@@ -79,6 +92,7 @@ int main(int argc, char *argv[])
     {
         label nCorr = 0;
         scalar residual = GREAT;
+        bool converged = false;
 
         do
         {
@@ -115,30 +129,62 @@ int main(int argc, char *argv[])
 
             ++nCorr;
 
+            // The contact state entered this solve through the boundary
+            // conditions; it counts as converged when it did not change
+            // in this corrector
+            converged =
+                residual < tolerance
+             && contactStateReporter::converged(D, tolerance);
+
             if (verbose)
             {
                 Info<< "    corrector " << nCorr
                     << "  residual = " << residual << endl;
             }
         }
-        while (residual > tolerance && nCorr < nCorrectors);
+        while (!converged && nCorr < nCorrectors);
 
         sigmaEq = sqrt((3.0/2.0)*magSqr(dev(sigma)));
         volPointInterpolation::New(mesh).interpolate(D, pointD);
 
+        const string contactSummary(contactStateReporter::summary(D));
+
         Info<< "Time = " << runTime.timeName()
             << "  correctors = " << nCorr
             << "  residual = " << residual
-            << contactStateReporter::summary(D).c_str()
+            << (converged ? "" : "  NOT CONVERGED")
+            << contactSummary.c_str()
             << endl;
 
-        if (residual > tolerance)
+        // contactReport and other function objects read it
+        mesh.data::set("solidMechanicsConverged", converged);
+
+        if (!converged)
         {
+            if (onNonConvergence == "stop")
+            {
+                // Nothing of this step is written: the last converged time
+                // is the last on disk
+                FatalErrorInFunction
+                    << "Load step at time " << runTime.timeName()
+                    << " did not converge in nCorrectors = " << nCorrectors
+                    << ": residual " << residual << " (tolerance "
+                    << tolerance << ")"
+                    << (residual < tolerance ? ", contact state still changing" : "")
+                    << nl << "Contact state:"
+                    << (contactSummary.empty() ? " none" : contactSummary.c_str())
+                    << nl << "Raise nCorrectors, or set 'onNonConvergence"
+                    << " continue;' in solidMechanics of "
+                    << solidControls.name() << " to accept such steps"
+                    << exit(FatalError);
+            }
+
             WarningInFunction
                 << "Load step at time " << runTime.timeName()
                 << " did not converge in nCorrectors = " << nCorrectors
-                << " (residual " << residual << " > tolerance "
-                << tolerance << ")" << endl;
+                << " (residual " << residual << ", tolerance "
+                << tolerance << "); going on (onNonConvergence continue)"
+                << endl;
         }
 
         runTime.write();

@@ -28,3 +28,29 @@ Foam::string Foam::contactStateReporter::summary(const volVectorField& D)
     }
     return s;
 }
+
+
+bool Foam::contactStateReporter::converged
+(
+    const volVectorField& D,
+    const scalar tolerance
+)
+{
+    bool conv = true;
+    forAll(D.boundaryField(), patchi)
+    {
+        const contactStateReporter* rep =
+            dynamic_cast<const contactStateReporter*>
+            (
+                &D.boundaryField()[patchi]
+            );
+
+        // Every patch is asked, so that the reductions inside match on
+        // all processors
+        if (rep && !rep->contactConverged(tolerance))
+        {
+            conv = false;
+        }
+    }
+    return conv;
+}

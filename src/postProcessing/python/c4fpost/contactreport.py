@@ -3,7 +3,8 @@ postProcessing/contactReport/<startTime>/<slavePatch>.dat."""
 import os
 
 COLUMNS = ["time", "normalForce", "tangentialForce", "contactArea",
-           "maxPressure", "maxPenetration", "activeFaces", "outerCorrectors"]
+           "maxPressure", "maxPenetration", "activeFaces", "outerCorrectors",
+           "converged"]
 
 
 def _start_time_key(name):

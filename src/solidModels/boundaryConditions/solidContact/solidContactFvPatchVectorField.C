@@ -348,6 +348,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
         timeIndex_ = timeIndex;
         nCorrectors_ = 0;
         updateTime_ = 0;
+        normalForce_ = GREAT;
 
         // The last step's target is a good start; its residual history
         // belongs to another load
@@ -428,6 +429,8 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     // 5. The balancing force on the master
     pressure_ = cond_.pressure;
     traction_ = pressure_*n;
+    normalForcePrev_ = normalForce_;
+    normalForce_ = gSum(pressure_*patch().magSf());
     masterTraction_ =
         pair_->masterForce(traction_*patch().magSf())/master.patch().magSf();
 
@@ -474,6 +477,8 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     timeIndex_(-1),
     nCorrectors_(0),
     updateTime_(0),
+    normalForce_(GREAT),
+    normalForcePrev_(GREAT),
     omega0_(0.3),
     aitken_(true),
     omega_(0.3),
@@ -509,6 +514,8 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     timeIndex_(-1),
     nCorrectors_(0),
     updateTime_(0),
+    normalForce_(GREAT),
+    normalForcePrev_(GREAT),
     omega0_(dict.getOrDefault<scalar>("couplingRelaxation", 0.3)),
     aitken_(dict.getOrDefault<bool>("aitken", true)),
     omega_(omega0_),
@@ -598,6 +605,8 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     timeIndex_(-1),
     nCorrectors_(0),
     updateTime_(0),
+    normalForce_(GREAT),
+    normalForcePrev_(GREAT),
     omega0_(ptf.omega0_),
     aitken_(ptf.aitken_),
     omega_(ptf.omega0_),
@@ -654,6 +663,8 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     timeIndex_(ptf.timeIndex_),
     nCorrectors_(ptf.nCorrectors_),
     updateTime_(ptf.updateTime_),
+    normalForce_(ptf.normalForce_),
+    normalForcePrev_(ptf.normalForcePrev_),
     omega0_(ptf.omega0_),
     aitken_(ptf.aitken_),
     omega_(ptf.omega_),
@@ -757,6 +768,24 @@ Foam::solidContactFvPatchVectorField::contactReport() const
     r.activeSetChanges = returnReduce(cond_.nChanged, sumOp<label>());
     r.updateTime = returnReduce(updateTime_, maxOp<scalar>());
     return r;
+}
+
+
+bool Foam::solidContactFvPatchVectorField::contactConverged
+(
+    const scalar tolerance
+) const
+{
+    if (master_)
+    {
+        return true;
+    }
+
+    const label changes = returnReduce(cond_.nChanged, sumOp<label>());
+    const scalar dF = mag(normalForce_ - normalForcePrev_);
+    return
+        changes == 0
+     && dF <= tolerance*max(mag(normalForce_), VSMALL);
 }
 
 

@@ -30,6 +30,11 @@ void Foam::functionObjects::contactReport::findSlaves()
 
     const volVectorField& D = mesh_.lookupObject<volVectorField>(fieldName_);
 
+    // Set by the solver after each load step
+    const label converged =
+        mesh_.data::lookupOrDefault<bool>("solidMechanicsConverged", false)
+      ? 1 : 0;
+
     DynamicList<label> slaves;
     wordList names;
     forAll(D.boundaryField(), patchi)
@@ -66,7 +71,7 @@ void Foam::functionObjects::contactReport::writeFileHeader(const label i)
         const char* col :
         {
             "normalForce", "tangentialForce", "contactArea", "maxPressure",
-            "maxPenetration", "activeFaces", "outerCorrectors"
+            "maxPenetration", "activeFaces", "outerCorrectors", "converged"
         }
     )
     {
@@ -119,6 +124,11 @@ bool Foam::functionObjects::contactReport::write()
 
     const volVectorField& D = mesh_.lookupObject<volVectorField>(fieldName_);
 
+    // Set by the solver after each load step
+    const label converged =
+        mesh_.data::lookupOrDefault<bool>("solidMechanicsConverged", false)
+      ? 1 : 0;
+
     forAll(slavePatches_, i)
     {
         const solidContactFvPatchVectorField::report r =
@@ -138,6 +148,7 @@ bool Foam::functionObjects::contactReport::write()
                 << tab << r.maxPenetration
                 << tab << r.activeFaces
                 << tab << r.correctors
+                << tab << converged
                 << endl;
         }
     }
