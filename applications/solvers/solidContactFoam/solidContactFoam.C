@@ -71,6 +71,7 @@ Usage
 #include "volPointInterpolation.H"
 #include "mechanicalModel.H"
 #include "contactStateReporter.H"
+#include "contactFvMesh.H"
 
 int main(int argc, char *argv[])
 {
@@ -82,7 +83,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     #include "createTime.H"
-    #include "createMesh.H"
+    #include "createContactMesh.H"
     #include "readSolidMechanicsControls.H"
     #include "createFields.H"
 

@@ -9,7 +9,7 @@
 #include "emptyFvPatch.H"
 #include "wedgeFvPatch.H"
 #include "solidPatchTractions.H"
-#include "aitkenRelaxation.H"
+#include "contactFvMesh.H"
 #include "clockTime.H"
 
 #include <algorithm>
@@ -270,7 +270,7 @@ void Foam::solidContactFvPatchVectorField::initSlave()
     if (dict_.found("contactPressure"))
     {
         cond_.pressure = scalarField("contactPressure", dict_, patch().size());
-        cond_.explicitPressure = cond_.pressure;
+        pressure_ = cond_.pressure;
     }
     if (dict_.found("contactActive"))
     {
@@ -278,6 +278,7 @@ void Foam::solidContactFvPatchVectorField::initSlave()
         (
             scalarField("contactActive", dict_, patch().size())
         );
+        cond_.coupled = cond_.active;
     }
 }
 
@@ -302,38 +303,79 @@ void Foam::solidContactFvPatchVectorField::setOutputFields
 }
 
 
-const Foam::scalarField& Foam::solidContactFvPatchVectorField::relaxTarget
+void Foam::solidContactFvPatchVectorField::registerInterface()
+{
+    if (registered_)
+    {
+        return;
+    }
+
+    const contactFvMesh* mesh =
+        dynamic_cast<const contactFvMesh*>(&patch().boundaryMesh().mesh());
+    if (!mesh)
+    {
+        FatalErrorInFunction
+            << "Patch " << patch().name() << " of " << internalField().name()
+            << ": the condition solidContact couples the two bodies inside"
+            << " the D matrix and needs the solver's mesh type "
+            << contactFvMesh::typeName << " (as solidContactFoam creates"
+            << " it); this application's mesh is a plain fvMesh"
+            << exit(FatalError);
+    }
+    mesh->addContactInterface(patch().index(), contactInterface_);
+    registered_ = true;
+}
+
+
+const Foam::contactInterfaceCoupling*
+Foam::solidContactFvPatchVectorField::coupling() const
+{
+    // A copy of the field (a previous iterate) has no pair of its own
+    if (master_ && !db().foundObject<volVectorField>(internalField().name()))
+    {
+        return nullptr;
+    }
+    const solidContactFvPatchVectorField& slave = master_ ? shadow() : *this;
+    return slave.coupling_.valid() ? &slave.coupling_() : nullptr;
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::solidContactFvPatchVectorField::contactForce(const vectorField& D)
+{
+    vectorField Fs, Fm;
+    scalarField ps;
+    coupling()->forces(D, Fs, Fm, ps);
+    return tmp<vectorField>(new vectorField(master_ ? Fm : Fs));
+}
+
+
+void Foam::solidContactFvPatchVectorField::setCoefficients
 (
-    const scalarField& newTarget
+    const vectorField& F,
+    const vectorField& diag
 )
 {
-    if (target_.size() != newTarget.size())
-    {
-        target_ = newTarget;
-        return target_;
-    }
+    const scalarField KS(solidPatchTractions::impK(patch())*patch().magSf());
 
-    const scalarField r(newTarget - target_);
+    // The Laplacian's boundary flux is intCoeffs D_P - bouCoeffs plus the
+    // interface's sum_j a n_k^2 D_j. fvMatrix::solveSegregated adds the
+    // bouCoeffs of a non-coupled patch to the source and then the
+    // interface's sum at the current D once more (it is meant to cancel a
+    // coupled patch's patchNeighbourField term); so bouCoeffs carries
+    // that sum with the other sign: with F = sum_j a ((D_j - D_P).n + b) n
+    // at the current D, F + diag D_P is the explicit part plus that sum.
+    gradInternal_ = -diag/KS;
+    gradBoundary_ =
+        (
+            F
+          + cmptMultiply(diag, patchInternalField())
+          - explicitTraction_*patch().magSf()
+        )/KS;
 
-    if (residual_.size() != r.size())
-    {
-        omega_ = omega0_;
-    }
-    else if (aitken_)
-    {
-        c4f::coupling::AitkenSums sums;
-        forAll(r, facei)
-        {
-            c4f::coupling::accumulate(sums, residual_[facei], r[facei]);
-        }
-        reduce(sums.rPrevDotDiff, sumOp<scalar>());
-        reduce(sums.diffSqr, sumOp<scalar>());
-        omega_ = c4f::coupling::aitkenFactor(omega_, sums, 0.02, 1);
-    }
-
-    target_ += omega_*r;
-    residual_ = r;
-    return target_;
+    gradient() =
+        (F/patch().magSf() - explicitTraction_)
+       /solidPatchTractions::impK(patch());
 }
 
 
@@ -349,10 +391,6 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
         nCorrectors_ = 0;
         updateTime_ = 0;
         normalForce_ = GREAT;
-
-        // The last step's target is a good start; its residual history
-        // belongs to another load
-        residual_.clear();
     }
     ++nCorrectors_;
 
@@ -372,6 +410,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
                 normals_ == "smoothed", rebuildTolerance_
             )
         );
+        coupling_.reset(new contactInterfaceCoupling(pair_()));
     }
 
     // 1. Both surfaces in the current configuration, and the projection
@@ -383,56 +422,56 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     const vectorField Df(*this);
     pair_->update(master, Df, tpointD());
 
-    // 2. The state of the last solve, against the relaxed target
-    const vectorField& n = pair_->normal();
-    const scalarField Dn(n & Df);
-
+    // 2. The state of the last solve; its pressure is the reaction
     contactSlaveState state;
-    state.currentGap = pair_->gap();
-
-    // A face held in the last solve is judged by where that solve put it
-    // against the surface it was held to; a free face by the surface now
-    state.solvedGap = state.currentGap;
-    if (target_.size() == Dn.size())
-    {
-        forAll(Dn, facei)
-        {
-            if (cond_.active[facei])
-            {
-                state.solvedGap[facei] = Dn[facei] - target_[facei];
-            }
-        }
-    }
-    state.gap = Dn - relaxTarget(Dn - pair_->gap());
-    state.normal = n;
+    state.gap = pair_->gap();
+    state.normal = pair_->normal();
     state.K = solidPatchTractions::impK(patch());
     state.h = cellSizeNormal();
     state.delta = 1.0/patch().deltaCoeffs();
+    state.reaction = pressure_;
     state.inRange = pair_->inRange();
-
-    const vectorField ns(patch().nf());
-    state.reaction =
-        ((ns & solidPatchTractions::sigma(patch())) & state.normal);
 
     // 3. The method's decision
     method_->correct(state, cond_);
 
-    // 4. The direction-mixed coefficients
-    valueFraction() = cond_.valueFraction*sqr(n);
-    refValue() = Df - state.gap*n;
-    refGrad() =
-        (
-            cond_.explicitPressure*n
-          - solidPatchTractions::explicitNormalTraction(patch())
-        )/state.K;
+    // 4. The coupling of this corrector
+    const fvPatch& mp = master.patch();
+    explicitTraction_ = solidPatchTractions::explicitNormalTraction(patch());
 
-    // 5. The balancing force on the master
-    pressure_ = cond_.pressure;
-    traction_ = pressure_*n;
+    contactInterfaceCoupling::inputs in;
+    in.coupled = cond_.coupled;
+    in.compliance = cond_.compliance;
+    in.pressure0 = cond_.explicitPressure;
+    in.gap = state.gap;
+    in.normal = state.normal;
+    in.slaveK = state.K;
+    in.slaveDelta = state.delta;
+    in.slaveC = explicitTraction_;
+    in.masterK = pair_->gatherMaster(solidPatchTractions::impK(mp)());
+    in.masterDelta = pair_->gatherMaster(scalarField(1.0/mp.deltaCoeffs()));
+    in.masterC =
+        pair_->gatherMaster(solidPatchTractions::explicitNormalTraction(mp)());
+    in.slaveDf = Df;
+    in.masterDf = pair_->masterFaceDisplacement();
+    in.masterMagSf = pair_->gatherMaster(mp.magSf());
+    in.D = &primitiveField();
+
+    // Without a law of the last solve (the first corrector of a run or of a
+    // restart) the deferred correction is iterated to its own fixed point,
+    // a contraction of factor delta_j/K_j k_ij <= 1, so that a converged
+    // state stays converged
+    const label nSets = coupling_->hasLaw() ? 1 : 60;
+    for (label n = 0; n < nSets; ++n)
+    {
+        coupling_->set(in);
+    }
+
+    // 5. This patch's matrix coefficients
+    setCoefficients(contactForce(primitiveField()), coupling_->slaveDiag());
+
     normalForcePrev_ = normalForce_;
     normalForce_ = gSum(pressure_*patch().magSf());
-    masterTraction_ =
-        pair_->masterForce(traction_*patch().magSf())/master.patch().magSf();
 
     setOutputFields(pair_->gap(), activeFraction(cond_.active));
 
@@ -448,9 +487,8 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
             << nCorrectors_ << "  active = "
             << returnReduce(label(std::count(cond_.active.begin(), cond_.active.end(), true)), sumOp<label>())
             << "  changes = " << returnReduce(cond_.nChanged, sumOp<label>())
-            << "  omega = " << omega_
-            << "  F_N = " << gSum(pressure_*patch().magSf())
-            << "  max|g| = " << gMax(mag(state.currentGap)) << endl;
+            << "  F_N = " << normalForce_
+            << "  max|g| = " << gMax(mag(state.gap)) << endl;
     }
 }
 
@@ -463,7 +501,9 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     const DimensionedField<vector, volMesh>& iF
 )
 :
-    directionMixedFvPatchVectorField(p, iF),
+    contactLduInterfaceHolder(p),
+    fixedGradientFvPatchVectorField(p, iF),
+    lduInterfaceField(contactInterface_),
     dict_(),
     shadowPatchName_(),
     master_(false),
@@ -472,25 +512,20 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     rebuildTolerance_(0),
     method_(),
     pair_(),
+    coupling_(),
     cond_(),
-    masterTraction_(),
     timeIndex_(-1),
     nCorrectors_(0),
     updateTime_(0),
     normalForce_(GREAT),
     normalForcePrev_(GREAT),
-    omega0_(0.3),
-    aitken_(true),
-    omega_(0.3),
-    target_(),
-    residual_(),
+    registered_(false),
+    gradInternal_(),
+    gradBoundary_(),
+    explicitTraction_(),
     traction_(p.size(), Zero),
     pressure_(p.size(), 0)
-{
-    refValue() = Zero;
-    refGrad() = Zero;
-    valueFraction() = Zero;
-}
+{}
 
 
 Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
@@ -500,7 +535,9 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     const dictionary& dict
 )
 :
-    directionMixedFvPatchVectorField(p, iF),
+    contactLduInterfaceHolder(p),
+    fixedGradientFvPatchVectorField(p, iF),
+    lduInterfaceField(contactInterface_),
     dict_(dict),
     shadowPatchName_(dict.get<word>("shadowPatch")),
     master_(dict.get<bool>("master")),
@@ -509,26 +546,34 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     rebuildTolerance_(dict.getOrDefault<scalar>("rebuildTolerance", 0)),
     method_(),
     pair_(),
+    coupling_(),
     cond_(),
-    masterTraction_(),
     timeIndex_(-1),
     nCorrectors_(0),
     updateTime_(0),
     normalForce_(GREAT),
     normalForcePrev_(GREAT),
-    omega0_(dict.getOrDefault<scalar>("couplingRelaxation", 0.3)),
-    aitken_(dict.getOrDefault<bool>("aitken", true)),
-    omega_(omega0_),
-    target_(),
-    residual_(),
+    registered_(false),
+    gradInternal_(),
+    gradBoundary_(),
+    explicitTraction_(),
     traction_(p.size(), Zero),
     pressure_(p.size(), 0)
 {
-    if (!(omega0_ > 0 && omega0_ <= 1))
+    // The relaxed target these entries controlled no longer exists: the
+    // interface is implicit in the D matrix
+    for (const word obsolete : {"couplingRelaxation", "aitken"})
     {
-        FatalIOErrorInFunction(dict)
-            << "Invalid couplingRelaxation " << omega0_ << " in "
-            << dict.name() << ": it must lie in (0, 1]" << exit(FatalIOError);
+        if (dict.found(obsolete))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << obsolete << "' of " << dict.name()
+                << " is no longer used: the contact interface is implicit"
+                << " in the D matrix, with no relaxed target; remove it"
+                << " (the outer correctors are accelerated in"
+                << " solidMechanics of system/fvSolution)"
+                << exit(FatalIOError);
+        }
     }
 
     checkPatch(dict);
@@ -540,6 +585,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
         if (dict.found("contactTraction"))
         {
             traction_ = vectorField("contactTraction", dict, p.size());
+            pressure_ = -(traction_ & patch().nf());
         }
 
         if (dict.found("method"))
@@ -564,22 +610,12 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
         fvPatchVectorField::operator=(patchInternalField());
     }
 
-    // A restart continues from the written direction-mixed state, so that
-    // the face gradient, and with it the reaction read back in the first
-    // corrector, is the one the run was written with
-    if (dict.found("valueFraction"))
-    {
-        refValue() = vectorField("refValue", dict, p.size());
-        refGrad() = vectorField("refGradient", dict, p.size());
-        valueFraction() =
-            symmTensorField("valueFraction", dict, p.size());
-    }
-    else
-    {
-        refValue() = *this;
-        refGrad() = Zero;
-        valueFraction() = Zero;
-    }
+    // A restart continues from the written gradient, so that the face
+    // stress of its first corrector is the one the run was written with
+    gradient() =
+        dict.found("gradient")
+      ? vectorField("gradient", dict, p.size())
+      : vectorField(p.size(), Zero);
 }
 
 
@@ -591,7 +627,9 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     const fvPatchFieldMapper& mapper
 )
 :
-    directionMixedFvPatchVectorField(ptf, p, iF, mapper),
+    contactLduInterfaceHolder(p),
+    fixedGradientFvPatchVectorField(ptf, p, iF, mapper),
+    lduInterfaceField(contactInterface_),
     dict_(ptf.dict_),
     shadowPatchName_(ptf.shadowPatchName_),
     master_(ptf.master_),
@@ -600,23 +638,23 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     rebuildTolerance_(ptf.rebuildTolerance_),
     method_(),
     pair_(),
+    coupling_(),
     cond_(),
-    masterTraction_(),
     timeIndex_(-1),
     nCorrectors_(0),
     updateTime_(0),
     normalForce_(GREAT),
     normalForcePrev_(GREAT),
-    omega0_(ptf.omega0_),
-    aitken_(ptf.aitken_),
-    omega_(ptf.omega0_),
-    target_(),
-    residual_(),
+    registered_(false),
+    gradInternal_(),
+    gradBoundary_(),
+    explicitTraction_(),
     traction_(p.size(), Zero),
     pressure_(p.size(), 0)
 {
     // The mapped (e.g. decomposed) patch starts from the mapped state
     traction_.map(ptf.traction_, mapper);
+    pressure_.map(ptf.pressure_, mapper);
 
     if (!master_)
     {
@@ -625,10 +663,10 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
         if (ptf.cond_.pressure.size() == ptf.size())
         {
             cond_.pressure.map(ptf.cond_.pressure, mapper);
-            cond_.explicitPressure.map(ptf.cond_.explicitPressure, mapper);
             scalarField am(p.size(), 0);
             am.map(activeFraction(ptf.cond_.active), mapper);
             cond_.active = activeFlags(am);
+            cond_.coupled = cond_.active;
         }
     }
 }
@@ -649,7 +687,9 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     const DimensionedField<vector, volMesh>& iF
 )
 :
-    directionMixedFvPatchVectorField(ptf, iF),
+    contactLduInterfaceHolder(ptf.patch()),
+    fixedGradientFvPatchVectorField(ptf, iF),
+    lduInterfaceField(contactInterface_),
     dict_(ptf.dict_),
     shadowPatchName_(ptf.shadowPatchName_),
     master_(ptf.master_),
@@ -658,24 +698,35 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     rebuildTolerance_(ptf.rebuildTolerance_),
     method_(),
     pair_(),
+    coupling_(),
     cond_(ptf.cond_),
-    masterTraction_(ptf.masterTraction_),
     timeIndex_(ptf.timeIndex_),
     nCorrectors_(ptf.nCorrectors_),
     updateTime_(ptf.updateTime_),
     normalForce_(ptf.normalForce_),
     normalForcePrev_(ptf.normalForcePrev_),
-    omega0_(ptf.omega0_),
-    aitken_(ptf.aitken_),
-    omega_(ptf.omega_),
-    target_(ptf.target_),
-    residual_(ptf.residual_),
+    registered_(false),
+    gradInternal_(ptf.gradInternal_),
+    gradBoundary_(ptf.gradBoundary_),
+    explicitTraction_(ptf.explicitTraction_),
     traction_(ptf.traction_),
     pressure_(ptf.pressure_)
 {
     if (!master_)
     {
         method_ = contactMethod::New(patch(), dict_);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::solidContactFvPatchVectorField::~solidContactFvPatchVectorField()
+{
+    if (registered_)
+    {
+        dynamic_cast<const contactFvMesh&>(patch().boundaryMesh().mesh())
+            .removeContactInterface(patch().index(), contactInterface_);
     }
 }
 
@@ -689,38 +740,132 @@ void Foam::solidContactFvPatchVectorField::updateCoeffs()
         return;
     }
 
+    registerInterface();
+
     if (master_)
     {
-        const solidContactFvPatchVectorField& slave = shadow();
+        // The slave first, so that the coupling is this corrector's
+        solidContactFvPatchVectorField& slave =
+            const_cast<solidContactFvPatchVectorField&>(shadow());
+        slave.updateCoeffs();
 
-        // Before the slave's first update the force is the one written
-        // with the time started from (zero at a fresh start)
-        if (slave.masterTraction().size() == patch().size())
+        explicitTraction_ =
+            solidPatchTractions::explicitNormalTraction(patch());
+
+        if (coupling())
         {
-            traction_ = slave.masterTraction();
-        }
-        pressure_ = -(traction_ & patch().nf());
-
-        valueFraction() = Zero;
-        refValue() = *this;
-        refGrad() =
+            setCoefficients
             (
-                traction_
-              - solidPatchTractions::explicitNormalTraction(patch())
-            )/solidPatchTractions::impK(patch());
+                contactForce(primitiveField()),
+                coupling()->masterDiag()
+            );
+        }
+        else
+        {
+            // Before the slave's first update: the written force (zero at
+            // a fresh start)
+            setCoefficients
+            (
+                traction_*patch().magSf(),
+                vectorField(patch().size(), Zero)
+            );
+        }
 
-        setOutputFields
-        (
-            scalarField(patch().size(), 0),
-            pos(pressure_)
-        );
+        setOutputFields(scalarField(patch().size(), 0), pos(pressure_));
     }
     else
     {
         updateSlave();
     }
 
-    directionMixedFvPatchVectorField::updateCoeffs();
+    fixedGradientFvPatchVectorField::updateCoeffs();
+}
+
+
+void Foam::solidContactFvPatchVectorField::evaluate
+(
+    const Pstream::commsTypes commsType
+)
+{
+    if (!updated())
+    {
+        updateCoeffs();
+    }
+
+    // The tractions of the solve just made, from its cell values: the face
+    // values then agree with what the matrix held
+    if (coupling())
+    {
+        const vectorField F(contactForce(primitiveField()));
+        traction_ = F/patch().magSf();
+        gradient() =
+            (traction_ - explicitTraction_)
+           /solidPatchTractions::impK(patch());
+        pressure_ =
+            master_
+          ? scalarField(-(traction_ & patch().nf()))
+          : scalarField(traction_ & pair_->normal());
+    }
+
+    fixedGradientFvPatchVectorField::evaluate(commsType);
+}
+
+
+Foam::tmp<Foam::Field<Foam::vector>>
+Foam::solidContactFvPatchVectorField::gradientInternalCoeffs() const
+{
+    if (gradInternal_.size() != size())
+    {
+        return fixedGradientFvPatchVectorField::gradientInternalCoeffs();
+    }
+    return tmp<Field<vector>>(new Field<vector>(gradInternal_));
+}
+
+
+Foam::tmp<Foam::Field<Foam::vector>>
+Foam::solidContactFvPatchVectorField::gradientBoundaryCoeffs() const
+{
+    if (gradBoundary_.size() != size())
+    {
+        return fixedGradientFvPatchVectorField::gradientBoundaryCoeffs();
+    }
+    return tmp<Field<vector>>(new Field<vector>(gradBoundary_));
+}
+
+
+void Foam::solidContactFvPatchVectorField::updateInterfaceMatrix
+(
+    solveScalarField& result,
+    const bool add,
+    const solveScalarField& psiInternal,
+    const scalarField&,
+    const direction cmpt,
+    const Pstream::commsTypes
+) const
+{
+    // The matrix's own coefficients for this patch are the explicit source
+    // (see setCoefficients); the coupling's are used instead
+    const contactInterfaceCoupling* c = coupling();
+    if (!c)
+    {
+        return;
+    }
+
+    const scalarField nb
+    (
+        master_
+      ? c->masterNeighbour(psiInternal, cmpt)
+      : c->slaveNeighbour(psiInternal, cmpt)
+    );
+
+    // The neighbours enter the matrix product with the sign of an internal
+    // face's off-diagonal coefficient
+    const scalar sign = add ? 1 : -1;
+    const labelUList& fc = patch().faceCells();
+    forAll(fc, facei)
+    {
+        result[fc[facei]] += sign*nb[facei];
+    }
 }
 
 
@@ -821,23 +966,19 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
     {
         os.writeEntry("method", method_->methodName());
         method_->write(os);
-        os.writeEntry("couplingRelaxation", omega0_);
         os.writeEntry("normals", normals_);
         os.writeEntry("rebuildTolerance", rebuildTolerance_);
-        os.writeEntry("aitken", Switch(aitken_));
         if (dict_.found("searchDistance"))
         {
             os.writeEntry("searchDistance", searchDistance_);
         }
         if (cond_.pressure.size() == patch().size())
         {
-            cond_.pressure.writeEntry("contactPressure", os);
+            pressure_.writeEntry("contactPressure", os);
             activeFraction(cond_.active).writeEntry("contactActive", os);
         }
     }
-    refValue().writeEntry("refValue", os);
-    refGrad().writeEntry("refGradient", os);
-    valueFraction().writeEntry("valueFraction", os);
+    gradient().writeEntry("gradient", os);
     writeEntry("value", os);
 }
 

@@ -39,7 +39,7 @@ Foam::contactPatchPair::contactPatchPair
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::contactPatchPair::gatherMaster()
+void Foam::contactPatchPair::gatherMasterSurface()
 {
     const polyPatch& pp = master_.patch();
 
@@ -127,20 +127,8 @@ void Foam::contactPatchPair::gatherMaster()
 
 void Foam::contactPatchPair::moveMaster(const vectorField& masterD)
 {
-    List<vectorField> procD(Pstream::nProcs());
-    procD[Pstream::myProcNo()] = masterD;
-    Pstream::gatherList(procD);
-    Pstream::scatterList(procD);
-
-    vectorField faceD(masterRefFaces_.size());
-    label facei = 0;
-    for (const vectorField& d : procD)
-    {
-        for (const vector& v : d)
-        {
-            faceD[facei++] = v;
-        }
-    }
+    masterFaceD_ = gatherMaster(masterD);
+    const vectorField& faceD = masterFaceD_;
 
     masterPoints_.resize(masterRefPoints_.size());
     forAll(masterRefPoints_, pointi)
@@ -301,7 +289,7 @@ void Foam::contactPatchPair::update
 
     if (masterRefFaces_.empty() && returnReduce(master_.size(), sumOp<label>()))
     {
-        gatherMaster();
+        gatherMasterSurface();
     }
     moveMaster(masterD);
 
@@ -368,19 +356,21 @@ void Foam::contactPatchPair::update
             gap_[facei] = searchDistance_;
         }
     }
+
+    computeOverlaps();
 }
 
 
-Foam::tmp<Foam::vectorField> Foam::contactPatchPair::masterForce
-(
-    const vectorField& slaveForce
-) const
+void Foam::contactPatchPair::computeOverlaps()
 {
-    vectorField F(masterFaces_.size(), Zero);
+    overlapFaces_.setSize(slave_.size());
+    overlapWeights_.setSize(slave_.size());
 
-    forAll(slaveForce, facei)
+    forAll(overlapFaces_, facei)
     {
-        if (!inRange_[facei] || magSqr(slaveForce[facei]) == 0)
+        overlapFaces_[facei].clear();
+        overlapWeights_[facei].clear();
+        if (!inRange_[facei])
         {
             continue;
         }
@@ -423,24 +413,47 @@ Foam::tmp<Foam::vectorField> Foam::contactPatchPair::masterForce
             c4f::transfer::conservativeWeights(overlaps)
         );
 
+        DynamicList<label> faces;
+        DynamicList<scalar> weights;
         if (w.empty())
         {
-            F[hitFace_[facei]] -= slaveForce[facei];
+            // No overlap: the projection's own face takes it all
+            faces.append(hitFace_[facei]);
+            weights.append(1);
         }
         else
         {
             for (size_t k = 0; k < cand.size(); ++k)
             {
-                F[cand[k]] -= w[k]*slaveForce[facei];
+                if (w[k] > 0)
+                {
+                    faces.append(cand[k]);
+                    weights.append(w[k]);
+                }
             }
+        }
+        overlapFaces_[facei].transfer(faces);
+        overlapWeights_[facei].transfer(weights);
+    }
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::contactPatchPair::masterForce
+(
+    const vectorField& slaveForce
+) const
+{
+    vectorField F(masterFaces_.size(), Zero);
+
+    forAll(slaveForce, facei)
+    {
+        const labelList& faces = overlapFaces_[facei];
+        const scalarList& w = overlapWeights_[facei];
+        forAll(faces, k)
+        {
+            F[faces[k]] -= w[k]*slaveForce[facei];
         }
     }
 
-    Pstream::listCombineGather(F, plusEqOp<vector>());
-    Pstream::listCombineScatter(F);
-
-    return tmp<vectorField>
-    (
-        new vectorField(SubList<vector>(F, master_.size(), masterStart_))
-    );
+    return masterSlice(sumOverProcessors(F)());
 }

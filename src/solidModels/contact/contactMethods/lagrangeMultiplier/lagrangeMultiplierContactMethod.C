@@ -55,7 +55,7 @@ void Foam::contactMethods::lagrangeMultiplier::correct
 
         const bool active =
             state.inRange[facei]
-         && c4f::contact::activeByPrimalDual(lambda, state.solvedGap[facei], c);
+         && c4f::contact::activeByPrimalDual(lambda, state.gap[facei], c);
 
         if (active != cond.active[facei])
         {
@@ -63,12 +63,9 @@ void Foam::contactMethods::lagrangeMultiplier::correct
         }
         cond.active[facei] = active;
 
-        cond.valueFraction[facei] = active ? 1 : 0;
+        cond.coupled[facei] = active;
+        cond.compliance[facei] = 0;
         cond.explicitPressure[facei] = 0;
-
-        // The reaction of the last solve is what the slave carries; the
-        // master gets exactly that, tensile or not, so the forces balance.
-        // A face released now carried it in the last solve only.
-        cond.pressure[facei] = active ? lambda : 0;
+        cond.pressure[facei] = lambda;
     }
 }

@@ -77,31 +77,20 @@ void Foam::contactMethods::penalty::correct
     forAll(state.gap, facei)
     {
         bool active = false;
+        cond.coupled[facei] = false;
+        cond.compliance[facei] = 0;
+        cond.explicitPressure[facei] = 0;
 
         if (!state.inRange[facei])
         {
-            cond.valueFraction[facei] = 0;
-            cond.explicitPressure[facei] = 0;
             cond.pressure[facei] = 0;
         }
         else if (implicit_)
         {
-            // What the slave carried in the last solve: the normal
-            // reaction of its face stress, which at convergence is the
-            // Robin traction eps <-g_N>. The master gets exactly that, as
-            // with the Lagrange multiplier; handing it the pressure of the
-            // gap before the solve would overshoot by eps/(K/L), the
-            // penalty-to-body stiffness ratio.
-            cond.pressure[facei] =
-                cond.active[facei]
-              ? state.reaction[facei]
-              : 0;
-
             // A face in contact stays so while it pushes; a free face
-            // enters when it penetrates the (relaxed) master. Judging an
-            // active face by its gap instead would flip it whenever the
-            // master moves by more than the penetration, p/eps, between
-            // correctors.
+            // enters when it penetrates
+            cond.pressure[facei] =
+                cond.active[facei] ? state.reaction[facei] : 0;
             active =
                 cond.active[facei]
               ? cond.pressure[facei] > 0
@@ -110,14 +99,8 @@ void Foam::contactMethods::penalty::correct
                     state.gap[facei], eps[facei]
                 ).pressure > 0;
 
-            cond.valueFraction[facei] =
-                active
-              ? c4f::contact::robinValueFraction
-                (
-                    eps[facei], state.K[facei], state.delta[facei]
-                )
-              : 0;
-            cond.explicitPressure[facei] = 0;
+            cond.coupled[facei] = active;
+            cond.compliance[facei] = 1/eps[facei];
         }
         else
         {
@@ -125,15 +108,14 @@ void Foam::contactMethods::penalty::correct
             // the forces balance in every corrector
             const scalar pNew = c4f::contact::penaltyPressure
             (
-                state.currentGap[facei], eps[facei]
+                state.gap[facei], eps[facei]
             ).pressure;
 
             const scalar p =
-                cond.explicitPressure[facei]
-              + omega_*(pNew - cond.explicitPressure[facei]);
+                cond.pressure[facei]
+              + omega_*(pNew - cond.pressure[facei]);
 
             active = p > 0;
-            cond.valueFraction[facei] = 0;
             cond.explicitPressure[facei] = p;
             cond.pressure[facei] = p;
         }
