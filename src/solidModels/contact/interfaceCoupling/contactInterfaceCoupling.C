@@ -22,6 +22,13 @@ Foam::tmp<Foam::Field<Type>> Foam::contactInterfaceCoupling::masterCellValues
 }
 
 
+Foam::vector Foam::contactInterfaceCoupling::implicitWeights(const vector& n)
+{
+    const scalar n1 = mag(n.x()) + mag(n.y()) + mag(n.z());
+    return n1*cmptMag(n);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactInterfaceCoupling::contactInterfaceCoupling
@@ -176,10 +183,10 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::slaveDiag() const
     vectorField& d = td.ref();
     forAll(d, i)
     {
-        const vector nn(cmptMultiply(normal_[i], normal_[i]));
+        const vector w(implicitWeights(normal_[i]));
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            d[i] += coeff_[s]*nn;
+            d[i] += coeff_[s]*w;
         }
     }
     return td;
@@ -191,10 +198,10 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterDiag() const
     vectorField d(nMaster_, Zero);
     forAll(normal_, i)
     {
-        const vector nn(cmptMultiply(normal_[i], normal_[i]));
+        const vector w(implicitWeights(normal_[i]));
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            d[masterFace_[s]] += coeff_[s]*nn;
+            d[masterFace_[s]] += coeff_[s]*w;
         }
     }
     return pair_.masterSlice(pair_.sumOverProcessors(d, tag_)());
@@ -213,10 +220,10 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
     scalarField& nb = tnb.ref();
     forAll(nb, i)
     {
-        const scalar nk2 = sqr(normal_[i][cmpt]);
+        const scalar w = implicitWeights(normal_[i])[cmpt];
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            nb[i] += coeff_[s]*nk2*psiM[masterFace_[s]];
+            nb[i] += coeff_[s]*w*psiM[masterFace_[s]];
         }
     }
     return tnb;
@@ -234,10 +241,10 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::masterNeighbour
     scalarField nb(nMaster_, 0);
     forAll(normal_, i)
     {
-        const scalar nk2 = sqr(normal_[i][cmpt]);
+        const scalar w = implicitWeights(normal_[i])[cmpt];
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            nb[masterFace_[s]] += coeff_[s]*nk2*psi[fc[i]];
+            nb[masterFace_[s]] += coeff_[s]*w*psi[fc[i]];
         }
     }
     return pair_.masterSlice(pair_.sumOverProcessors(nb, tag_)());

@@ -1,0 +1,410 @@
+#!/usr/bin/python3
+"""contactPatchTest3D: the stress must be uniform and uniaxial across a 3D non-matching interface.
+
+The checks, their tolerances and where the tolerances come from live here,
+once: the tutorial prints them, the regression runner (tests/run.py) reads
+them with --json.
+
+Two boxes 1 x 1 x 0.5 m stacked in z (upper 10 x 8 x 5 cells, its bottom
+upperBottom the slave with 10 x 8 faces; lower 7 x 5 x 5 cells, its top
+lowerTop the master with 7 x 5 faces; column height L = 1 m) are pressed
+together by moving the upper top down by Delta = 0.01 m (normal component
+only) with the lower bottom held in z. Symmetry planes at x = 0 and y = 0,
+traction-free faces at x = 1 and y = 1: nothing resists the lateral
+expansion, so for ANY nu the exact state is uniaxial stress,
+    sigma_zz = -E Delta / L = -1e4 Pa (E = 1e6 Pa),
+all other components 0, in every cell (E, not the plane-strain
+E/(1 - nu^2) of the 2D patch test), and the contact pressure is 1e4 Pa on
+every face. Uniform strain is represented exactly by the discretisation,
+so the patch test is passed exactly or not at all.
+
+Frame. With Allrun -rotate the mesh is turned (30 degrees about (1 2 3)),
+and the stress is compared in the box's own frame, sigma' = R^T sigma R.
+R is read from the mesh, not assumed: its columns are the unit outward
+normal of symmetryX negated (R e_x), e_z x e_x (R e_y) and the unit
+outward normal of upperTop (R e_z), averaged over the patch faces (the
+points are written with 12 digits, so R is exact to ~1e-11). Cell and face
+centres are turned back the same way (x' = R^T x) for the table and plot.
+Not rotated, R = I to round-off.
+
+Checks (all variants):
+  - load_direction: the top displacement in 0/D (topDisplacement) against
+    R (0 0 -Delta), relative to Delta; tolerance 1e-8 (Allrun writes it
+    with 15 digits, the mesh's R is good to ~1e-11). A -rotate run whose
+    load did not turn with the mesh fails here first.
+  - other_components: max over cells of |sigma'_ij| / |sigma_exact| for
+    ij = xx, yy, xy, xz, yz; tolerance 1e-6, as for sigma'_zz below.
+  - converged: the last `Time = 1  correctors = N  residual = r` line of
+    log.solidContactFoam has no NOT CONVERGED and r below the solver's
+    `tolerance` (solidMechanics in system/fvSolution); value r.
+
+lagrangeMultiplier (the gap is closed exactly) and -noContact (the two
+bodies decoupled, each contact patch given the exact state the contact run
+must converge to: the slave its normal displacement R (0 0 -0.005), the
+master the pressure E Delta/L), max over ALL cells of
+    |sigma'_zz - sigma_exact| / |sigma_exact|  <=  1e-6.
+  1e-6 leaves room for the outer correctors, which stop at a residual of
+  1e-9 (system/fvSolution), and for the 12 significant digits of the ASCII
+  output, as in the 2D patch test.
+
+penalty (eps_N = s K / h, s = penaltyScale, K = 2 mu + lambda, h = V/A of
+the slave face cells = 0.1 m, read from 0/D and the mesh). The penalty
+spring is in series with the column. The gap closes to a penetration
+g = p/eps_N with p = |sigma|, and the column takes the rest of Delta in
+uniaxial stress (the lateral faces are free, so the column's modulus is E,
+while the penalty, like the solver, is scaled with the constrained modulus
+K = 2 mu + lambda = E (1 - nu)/((1 + nu)(1 - 2 nu))):
+    |sigma| L / E + |sigma| / eps_N = Delta
+    sigma_pen = -E Delta / (L + E/eps_N) = -E Delta / (L + E h/(s K))
+and every cell's relative error is the offset
+    offset = 1 - L/(L + E/eps_N) = r/(1 + r),    r = (E/K) h/(s L),
+which for nu = 0 (K = E) is the 2D h/(s L)/(1 + h/(s L)): 9.90e-3 for
+s = 10; nu = 0.3 gives E/K = 1.3*0.4/0.7 = 0.743 and 7.37e-3. Both boxes
+carry the same stress, so they expand sideways alike and the interface
+does not slide (the contact is frictionless anyway). Checks:
+|max relative error - offset| <= 1e-3 offset (the penalty state is exact
+to the same 1e-6 as above, 1e-4 of the ~1e-2 offset; the 2D patch test
+meets its prediction to 1e-3 of itself) and
+(max - min sigma'_zz)/|sigma_exact| <= 1e-6.
+
+Contact variants, also: the total normal force on the slave patch,
+sum_f p_f |Sf_f|, against |sigma| (exact or penalty) times the patch area
+(1 m2), with the same tolerance as the stress; and, when the contactReport
+function object wrote postProcessing/contactReport/*/upperBottom.dat, its
+last normalForce likewise.
+"""
+import os
+import re
+import sys
+
+# In the repository the package is three levels up; a copied case finds it
+# through $C4F_ROOT, which etc/bashrc exports
+for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
+           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
+    if os.path.isdir(os.path.join(_p, "c4fpost")):
+        sys.path.insert(0, _p)
+        break
+from c4fpost import foamio, hertz, report, contactreport  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+NAME = "contactPatchTest3D"
+DELTA = 0.01    # downward displacement of upperTop [m], 0/D
+L = 1.0         # height of the two-box column [m], system/blockMeshDict
+SLAVE = "upperBottom"
+MASTER = "lowerTop"
+TOP = "upperTop"           # outward normal R e_z
+SYMMETRY_X = "symmetryX"   # outward normal -R e_x
+EXACT_TOL = 1e-6
+LOAD_TOL = 1e-8
+# symmTensor order in OpenFOAM files: xx xy xz yy yz zz
+_SYMM = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
+OTHERS = {"xx": (0, 0), "yy": (1, 1), "xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
+
+
+def _strip(path):
+    text = open(path).read()
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    return re.sub(r"//[^\n]*", "", text)
+
+
+def rotation_from_mesh(case):
+    """R with columns R e_x, R e_y, R e_z, from the patch normals."""
+    def unit_normal(patch):
+        _, Sf = hertz.patch_geometry(case, patch)
+        n = Sf.sum(axis=0)
+        return n / np.linalg.norm(n)
+    ez = unit_normal(TOP)
+    ex = -unit_normal(SYMMETRY_X)
+    ex -= ez * float(ex @ ez)
+    ex /= np.linalg.norm(ex)
+    return np.column_stack((ex, np.cross(ez, ex), ez))
+
+
+def variant(case):
+    """(contact, method): contact is False when 0/D gives the slave the
+    exact state ($slaveExact, Allrun -noContact)."""
+    path = os.path.join(case, "0", "D")
+    text = _strip(path)
+    bf = text[re.search(r"\bboundaryField\b", text).end():]
+    m = re.search(r"\b%s\s*\{\s*\$(\w+)\s*;" % SLAVE, bf)
+    contact = not (m and m.group(1) == "slaveExact")
+    return contact, hertz.read_entry(path, "method")
+
+
+def top_displacement(case):
+    text = _strip(os.path.join(case, "0", "D"))
+    m = re.search(r"^\s*topDisplacement\s+\(([^)]*)\)\s*;", text, flags=re.M)
+    return np.array(m.group(1).split(), float)
+
+
+def solid_controls(case):
+    """(tolerance, nCorrectors) of solidMechanics in system/fvSolution."""
+    text = _strip(os.path.join(case, "system", "fvSolution"))
+    body = re.search(r"\bsolidMechanics\s*\{([^}]*)\}", text).group(1)
+    tol = float(re.search(r"\btolerance\s+([^\s;]+)\s*;", body).group(1))
+    ncorr = int(re.search(r"\bnCorrectors\s+([^\s;]+)\s*;", body).group(1))
+    return tol, ncorr
+
+
+def last_step(case):
+    """The solver's last step summary from log.solidContactFoam:
+    dict(time, correctors, residual, converged, contact) or None."""
+    path = os.path.join(case, "log.solidContactFoam")
+    if not os.path.exists(path):
+        return None
+    steps = re.findall(r"^Time = (\S+)\s+correctors = (\d+)\s+residual = (\S+)(.*)$",
+                       open(path).read(), flags=re.M)
+    if not steps:
+        return None
+    t, n, r, rest = steps[-1]
+    return dict(time=t, correctors=int(n), residual=float(r),
+                converged="NOT CONVERGED" not in rest, contact=rest.strip())
+
+
+def convergence_check(case):
+    tol, ncorr = solid_controls(case)
+    step = last_step(case)
+    if step is None:
+        return dict(name=NAME + "/converged", value=float("inf"), reference=0.0,
+                    error=float("inf"), tolerance=tol, passed=False,
+                    units="residual (no step summary in log.solidContactFoam)"), step, ncorr
+    r = step["residual"]
+    return dict(name=NAME + "/converged", value=r, reference=0.0, error=r, tolerance=tol,
+                passed=bool(step["converged"] and r < tol),
+                units="outer residual of time %s after %d correctors"
+                % (step["time"], step["correctors"])), step, ncorr
+
+
+def no_result(case, contact, method, why):
+    """No time written (a step that does not converge stops the solver
+    before writing): every stress check fails."""
+    inf = float("inf")
+    conv, step, ncorr = convergence_check(case)
+    if contact and method == "penalty":
+        names = ["szz_penalty_offset", "szz_uniformity"]
+    else:
+        names = ["szz_max_rel_error"]
+    checks = [dict(name="%s/%s" % (NAME, n), value=inf, reference=0.0, error=inf,
+                   tolerance=EXACT_TOL, units=why, passed=False)
+              for n in names + ["other_components"]]
+    checks.append(conv)
+    return dict(time=None, method=method, contact=contact, why=why, step=step,
+                nCorrectors=ncorr, checks=checks)
+
+
+def compare(case):
+    contact, method = variant(case)
+    try:
+        time = foamio.latest_time(case)
+    except FileNotFoundError:
+        return no_result(case, contact, method,
+                         "no time written: see log.solidContactFoam")
+    E, nu, planeStress = hertz.elastic_constants(case)
+    if planeStress:
+        raise SystemExit("%s: planeStress yes makes no sense in 3D" % NAME)
+    K = hertz.impK(E, nu)
+    exact = -E * DELTA / L
+
+    R = rotation_from_mesh(case)
+    C, V = hertz.cell_centres_volumes(case)
+    Cr = C @ R                          # x' = R^T x, row by row
+    Cf, Sf = hertz.patch_geometry(case, SLAVE)
+    Cfr = Cf @ R
+    area = np.linalg.norm(Sf, axis=1)
+    slaveCells = foamio.patch_face_cells(case, SLAVE)
+    masterCells = foamio.patch_face_cells(case, MASTER)
+    h = V[slaveCells] / area
+
+    s6 = foamio.read_internal(os.path.join(case, time, "sigma"), V.size)
+    S = np.empty((V.size, 3, 3))
+    for k, (i, j) in enumerate(_SYMM):
+        S[:, i, j] = S[:, j, i] = s6[:, k]
+    Sr = np.einsum("ki,nkl,lj->nij", R, S, R)     # R^T sigma R
+    szz = Sr[:, 2, 2]
+    rel = np.abs(szz - exact) / abs(exact)
+    maxRel = float(rel.max())
+    spread = float((szz.max() - szz.min()) / abs(exact))
+    others = {k: float(np.abs(Sr[:, i, j]).max() / abs(exact)) for k, (i, j) in OTHERS.items()}
+    worst = max(others, key=others.get)
+
+    d = top_displacement(case)
+    d0 = R @ np.array([0.0, 0.0, -DELTA])
+    loadErr = float(np.linalg.norm(d - d0) / DELTA)
+
+    res = dict(time=time, method=method, contact=contact, E=E, nu=nu, K=K, exact=exact,
+               maxRel=maxRel, spread=spread, others=others, R=R.tolist(),
+               rotated=bool(np.abs(R - np.eye(3)).max() > 1e-6), h=h.tolist(),
+               topDisplacement=d.tolist())
+    checks = [dict(name=NAME + "/load_direction", value=float(np.linalg.norm(d)),
+                   reference=DELTA, error=loadErr, tolerance=LOAD_TOL,
+                   units="m (error: |D_top - R (0 0 -Delta)|/Delta)")]
+    if contact and method == "penalty":
+        s = hertz.read_entry(os.path.join(case, "0", "D"), "penaltyScale")
+        eps = s * K / h
+        if np.ptp(eps) > 1e-12 * eps.max():
+            print("NOTE: the slave cells' h = V/A varies (%g .. %g); using the mean"
+                  % (h.min(), h.max()))
+        eps = float(eps.mean())
+        predicted = -E * DELTA / (L + E / eps)
+        offset = 1.0 - L / (L + E / eps)
+        tol = 1e-3 * offset
+        res.update(penaltyScale=s, eps=eps, predicted=predicted, offset=offset)
+        checks += [
+            dict(name=NAME + "/szz_penalty_offset", value=maxRel, reference=offset,
+                 error=abs(maxRel - offset), tolerance=tol, units="fraction of |sigma_exact|"),
+            dict(name=NAME + "/szz_uniformity", value=spread, reference=0.0,
+                 error=spread, tolerance=EXACT_TOL, units="fraction of |sigma_exact|"),
+        ]
+        forceTol = tol
+    else:
+        predicted = exact
+        res.update(predicted=predicted, offset=0.0)
+        checks.append(dict(name=NAME + "/szz_max_rel_error", value=maxRel, reference=0.0,
+                           error=maxRel, tolerance=EXACT_TOL, units="fraction of |sigma_exact|"))
+        forceTol = EXACT_TOL
+    checks.append(dict(name=NAME + "/other_components", value=others[worst], reference=0.0,
+                       error=others[worst], tolerance=EXACT_TOL,
+                       units="max |sigma'_%s|/|sigma_exact|" % worst))
+
+    # Contact force on the slave patch
+    pPath = os.path.join(case, time, "contactPressure")
+    res["report"] = None
+    if contact:
+        p = foamio.read_patch(pPath, SLAVE, area.size)
+        F = float(np.sum(p * area))
+        Fref = abs(predicted) * float(area.sum())
+        checks.append(dict(name=NAME + "/contact_force", value=F, reference=Fref,
+                           error=abs(F - Fref) / Fref, tolerance=forceTol, units="N"))
+        rep = contactreport.last_row(case, SLAVE)
+        if rep and "normalForce" in rep:
+            Fr = rep["normalForce"]
+            checks.append(dict(name=NAME + "/contactReport_normalForce", value=Fr,
+                               reference=Fref, error=abs(Fr - Fref) / Fref,
+                               tolerance=forceTol, units="N"))
+        res.update(report=rep, F=F, Fref=Fref, slaveX=Cfr[:, 0].tolist(), slaveP=p.tolist())
+        CfM, _ = hertz.patch_geometry(case, MASTER)
+        pM = foamio.read_patch(pPath, MASTER, len(CfM))
+        res.update(masterX=(CfM @ R)[:, 0].tolist(), masterP=pM.tolist())
+
+    conv, step, ncorr = convergence_check(case)
+    checks.append(conv)
+    res.update(step=step, nCorrectors=ncorr)
+    for c in checks:
+        c.setdefault("passed", bool(c["error"] <= c["tolerance"]))
+
+    # Data for the table and the plot: the column of cells nearest
+    # x' = y' = 0.5 in each box, and the cells on either side of the
+    # interface
+    cols = []
+    for body in (Cr[:, 2] < 0.0, Cr[:, 2] > 0.0):
+        idx = np.nonzero(body)[0]
+        dxy = np.hypot(Cr[idx, 0] - 0.5, Cr[idx, 1] - 0.5)
+        first = idx[np.argmin(dxy)]
+        col = idx[np.hypot(Cr[idx, 0] - Cr[first, 0], Cr[idx, 1] - Cr[first, 1]) < 1e-9]
+        cols.extend(col[np.argsort(Cr[col, 2])].tolist())
+    cols = np.array(cols)
+    res.update(colX=Cr[cols, 0].tolist(), colY=Cr[cols, 1].tolist(), colZ=Cr[cols, 2].tolist(),
+               colSzz=szz[cols].tolist(),
+               slaveCellX=Cr[slaveCells, 0].tolist(), slaveCellSzz=szz[slaveCells].tolist(),
+               masterCellX=Cr[masterCells, 0].tolist(), masterCellSzz=szz[masterCells].tolist())
+    res["checks"] = checks
+    return res
+
+
+def plot(res, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    ex = abs(res["exact"])
+    pred = abs(res["predicted"])
+    penalty = res["contact"] and res["method"] == "penalty"
+    what = "%s%s, nu = %g" % (res["method"] if res["contact"] else "no contact",
+                               ", rotated" if res["rotated"] else "", res["nu"])
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    a1.plot(np.array(res["colSzz"]) / ex, res["colZ"], "o", label="cells nearest x' = y' = 0.5")
+    a1.axvline(-1.0, color="k", lw=1, label="exact (gap closed)")
+    if penalty:
+        a1.axvline(-pred / ex, color="C3", ls="--", lw=1, label="penalty prediction")
+    a1.axhline(0.0, color="0.6", ls=":", lw=1)
+    a1.set_xlabel(r"$\sigma'_{zz}$ / |E $\Delta$/L|")
+    a1.set_ylabel("z' [m]")
+    a1.set_title("stress along the vertical centre line")
+    a1.legend(fontsize=8)
+    a1.grid(alpha=0.3)
+    a2.plot(res["slaveCellX"], np.array(res["slaveCellSzz"]) / -ex, "o", ms=4,
+            label=r"$-\sigma'_{zz}$, upper cells on %s (slave, 10 x 8)" % SLAVE)
+    a2.plot(res["masterCellX"], np.array(res["masterCellSzz"]) / -ex, "s", ms=7, mfc="none",
+            label=r"$-\sigma'_{zz}$, lower cells on %s (master, 7 x 5)" % MASTER)
+    if "slaveP" in res:
+        a2.plot(res["slaveX"], np.array(res["slaveP"]) / ex, "x", ms=6,
+                label="contact pressure, %s faces" % SLAVE)
+        a2.plot(res["masterX"], np.array(res["masterP"]) / ex, "+", ms=9,
+                label="contact pressure, %s faces" % MASTER)
+    a2.axhline(1.0, color="k", lw=1, label="exact")
+    if penalty:
+        a2.axhline(pred / ex, color="C3", ls="--", lw=1, label="penalty prediction")
+    a2.set_xlabel("x' [m] (all y')")
+    a2.set_ylabel("/ |E $\\Delta$/L|")
+    a2.set_title("at the interface (%s)" % what)
+    a2.legend(fontsize=7)
+    a2.grid(alpha=0.3)
+    # At least +-3 % around the exact value, so that a uniform result shows
+    # as a straight line and the penalty offset (~1 %) stays in view
+    lo, hi = a1.get_xlim()
+    a1.set_xlim(min(lo, -1.03), max(hi, -0.97))
+    lo, hi = a2.get_ylim()
+    a2.set_ylim(min(lo, 0.97), max(hi, 1.03))
+    a1.text(0.03, 0.03, "max |error| %.2g, spread %.2g\n(fractions of |E $\\Delta$/L|)"
+            % (res["maxRel"], res["spread"]), transform=a1.transAxes, fontsize=8)
+    for ax in (a1, a2):
+        ax.ticklabel_format(useOffset=False)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def main():
+    args = report.parse_args(__doc__, "patchTest3D.png")
+    res = compare(args.case)
+    step = res["step"]
+    if res["time"] is None:
+        print("%s: %s (%s)" % (NAME, res["why"], res["method"] if res["contact"] else "no contact"))
+        if step:
+            print("  last step: time %s, %d correctors, residual %.3g%s"
+                  % (step["time"], step["correctors"], step["residual"],
+                     "" if step["converged"] else ", NOT CONVERGED"))
+        report.finish(res, args.case, None, args.json, plot)
+        return
+    print("%s: sigma' = R^T sigma R over all cells (time %s, %s)"
+          % (NAME, res["time"], ("method " + res["method"]) if res["contact"]
+             else "no contact: exact state on both contact patches"))
+    print("  E = %g Pa, nu = %g, K = 2mu + lambda = %g Pa; exact sigma'_zz = %g Pa"
+          % (res["E"], res["nu"], res["K"], res["exact"]))
+    print("  R (from the mesh%s):" % ("" if res["rotated"] else ", not rotated"))
+    for row in res["R"]:
+        # no "-0.0000000000" for round-off
+        print("    %14.10f %14.10f %14.10f" % tuple(v if abs(v) > 5e-11 else 0.0 for v in row))
+    print("  top displacement (0/D): (%.10g %.10g %.10g)" % tuple(res["topDisplacement"]))
+    if res["contact"] and res["method"] == "penalty":
+        print("  penalty: scale %g, h = V/A = %g m, eps_N = %g Pa/m -> sigma = %.9g Pa,"
+              " offset %.6g" % (res["penaltyScale"], np.mean(res["h"]), res["eps"],
+                                res["predicted"], res["offset"]))
+    print("  max |sigma'_zz - exact|/|exact| = %.4g, (max - min)/|exact| = %.4g"
+          % (res["maxRel"], res["spread"]))
+    print("  max |sigma'_ij|/|exact|: " + ", ".join("%s %.3g" % kv for kv in res["others"].items()))
+    if res["contact"]:
+        print("  contact force on %s: %.9g N (expected %.9g N)" % (SLAVE, res["F"], res["Fref"]))
+        if res["report"] is None:
+            print("  (no postProcessing/contactReport/*/%s.dat)" % SLAVE)
+    if step:
+        print("  solver: time %s, %d correctors (nCorrectors %d), residual %.3g%s"
+              % (step["time"], step["correctors"], res["nCorrectors"], step["residual"],
+                 "" if step["converged"] else ", NOT CONVERGED"))
+    print("%8s %8s %8s %16s" % ("x'", "y'", "z'", "sigma'_zz [Pa]"))
+    for x, y, z, s in zip(res["colX"], res["colY"], res["colZ"], res["colSzz"]):
+        print("%8.4f %8.4f %8.4f %16.9g" % (x, y, z, s))
+    report.finish(res, args.case, args.png, args.json, plot)
+
+
+if __name__ == "__main__":
+    main()
