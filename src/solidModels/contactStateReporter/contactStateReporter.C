@@ -54,3 +54,32 @@ bool Foam::contactStateReporter::converged
     }
     return conv;
 }
+
+
+bool Foam::contactStateReporter::activeSetChanged(const volVectorField& D)
+{
+    label changes = 0;
+    for (const fvPatchVectorField& pf : D.boundaryField())
+    {
+        const contactStateReporter* rep =
+            dynamic_cast<const contactStateReporter*>(&pf);
+        if (rep)
+        {
+            changes += rep->activeSetChanges();
+        }
+    }
+    return changes > 0;
+}
+
+
+void Foam::contactStateReporter::updateFromCells(volVectorField& D)
+{
+    for (fvPatchVectorField& pf : D.boundaryFieldRef())
+    {
+        contactStateReporter* rep = dynamic_cast<contactStateReporter*>(&pf);
+        if (rep)
+        {
+            rep->updateFromCells();
+        }
+    }
+}

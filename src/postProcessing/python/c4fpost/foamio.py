@@ -59,15 +59,47 @@ def read_internal(path, ncells=None):
     return _parse_value(text, m.end(), ncells or 0)
 
 
-def read_patch(path, patch, nfaces=None):
-    """The 'value' entry of one patch of a field file."""
+def read_patch(path, patch, nfaces=None, key="value"):
+    """The 'value' (or another field-valued) entry of one patch of a field
+    file."""
     text = _strip_comments(open(path).read())
     bm = re.search(r"\bboundaryField\b", text)
     pm = re.compile(r"\b%s\s*\{" % re.escape(patch)).search(text, bm.end())
     if not pm:
         raise KeyError("patch %s not in %s" % (patch, path))
-    vm = re.compile(r"\bvalue\b").search(text, pm.end())
+    vm = re.compile(r"\b%s\b" % re.escape(key)).search(text, pm.end())
+    if not vm:
+        raise KeyError("no entry %s after patch %s in %s" % (key, patch, path))
     return _parse_value(text, vm.end(), nfaces or 0)
+
+
+def format_list(values):
+    """An OpenFOAM 'nonuniform List<...>' entry value for a scalar or vector
+    array."""
+    values = np.asarray(values, dtype=float)
+    if values.ndim == 1:
+        body = "\n".join("%.17g" % v for v in values)
+        kind = "scalar"
+    else:
+        body = "\n".join("(" + " ".join("%.17g" % c for c in v) + ")" for v in values)
+        kind = "vector"
+    return "nonuniform List<%s> %d\n(\n%s\n)" % (kind, len(values), body)
+
+
+def replace_patch_entry(path, patch, body):
+    """Replace the dictionary of one patch in boundaryField of a field file
+    by the given entries (text inside the braces)."""
+    text = open(path).read()
+    bm = re.search(r"\bboundaryField\b", text)
+    pm = re.compile(r"\b%s\s*\{" % re.escape(patch)).search(text, bm.end())
+    if not pm:
+        raise KeyError("patch %s not in %s" % (patch, path))
+    depth, i = 1, pm.end()
+    while depth:
+        depth += (text[i] == "{") - (text[i] == "}")
+        i += 1
+    new = "%s\n    {\n%s\n    }" % (patch, body)
+    open(path, "w").write(text[:pm.start()] + new + text[i:])
 
 
 def read_boundary(case):

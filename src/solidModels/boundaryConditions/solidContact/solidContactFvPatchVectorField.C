@@ -457,20 +457,13 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     in.masterMagSf = pair_->gatherMaster(mp.magSf());
     in.D = &primitiveField();
 
-    // Without a law of the last solve (the first corrector of a run or of a
-    // restart) the deferred correction is iterated to its own fixed point,
-    // a contraction of factor delta_j/K_j k_ij <= 1, so that a converged
-    // state stays converged
-    const label nSets = coupling_->hasLaw() ? 1 : 60;
-    for (label n = 0; n < nSets; ++n)
-    {
-        coupling_->set(in);
-    }
+    coupling_->set(in);
 
     // 5. This patch's matrix coefficients
     setCoefficients(contactForce(primitiveField()), coupling_->slaveDiag());
 
-    normalForcePrev_ = normalForce_;
+    // The force this corrector starts from: its change in the corrector is
+    // part of the convergence test
     normalForce_ = gSum(pressure_*patch().magSf());
 
     setOutputFields(pair_->gap(), activeFraction(cond_.active));
@@ -518,7 +511,6 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     nCorrectors_(0),
     updateTime_(0),
     normalForce_(GREAT),
-    normalForcePrev_(GREAT),
     registered_(false),
     gradInternal_(),
     gradBoundary_(),
@@ -552,7 +544,6 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     nCorrectors_(0),
     updateTime_(0),
     normalForce_(GREAT),
-    normalForcePrev_(GREAT),
     registered_(false),
     gradInternal_(),
     gradBoundary_(),
@@ -644,7 +635,6 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     nCorrectors_(0),
     updateTime_(0),
     normalForce_(GREAT),
-    normalForcePrev_(GREAT),
     registered_(false),
     gradInternal_(),
     gradBoundary_(),
@@ -704,7 +694,6 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     nCorrectors_(ptf.nCorrectors_),
     updateTime_(ptf.updateTime_),
     normalForce_(ptf.normalForce_),
-    normalForcePrev_(ptf.normalForcePrev_),
     registered_(false),
     gradInternal_(ptf.gradInternal_),
     gradBoundary_(ptf.gradBoundary_),
@@ -794,20 +783,34 @@ void Foam::solidContactFvPatchVectorField::evaluate
 
     // The tractions of the solve just made, from its cell values: the face
     // values then agree with what the matrix held
-    if (coupling())
-    {
-        const vectorField F(contactForce(primitiveField()));
-        traction_ = F/patch().magSf();
-        gradient() =
-            (traction_ - explicitTraction_)
-           /solidPatchTractions::impK(patch());
-        pressure_ =
-            master_
-          ? scalarField(-(traction_ & patch().nf()))
-          : scalarField(traction_ & pair_->normal());
-    }
+    updateFromCells();
 
     fixedGradientFvPatchVectorField::evaluate(commsType);
+}
+
+
+void Foam::solidContactFvPatchVectorField::updateFromCells()
+{
+    if (!coupling())
+    {
+        return;
+    }
+
+    const vectorField F(contactForce(primitiveField()));
+    traction_ = F/patch().magSf();
+    gradient() =
+        (traction_ - explicitTraction_)
+       /solidPatchTractions::impK(patch());
+    pressure_ =
+        master_
+      ? scalarField(-(traction_ & patch().nf()))
+      : scalarField(traction_ & pair_->normal());
+}
+
+
+Foam::label Foam::solidContactFvPatchVectorField::activeSetChanges() const
+{
+    return master_ ? 0 : returnReduce(cond_.nChanged, sumOp<label>());
 }
 
 
@@ -927,10 +930,15 @@ bool Foam::solidContactFvPatchVectorField::contactConverged
     }
 
     const label changes = returnReduce(cond_.nChanged, sumOp<label>());
-    const scalar dF = mag(normalForce_ - normalForcePrev_);
+    // The change of the normal force in this corrector: from the state it
+    // started from to the solve's (the pressures evaluate() just set), the
+    // force residual of the fixed-point map, whatever step the outer loop
+    // then takes
+    const scalar F = gSum(pressure_*patch().magSf());
+    const scalar dF = mag(F - normalForce_);
     return
         changes == 0
-     && dF <= tolerance*max(mag(normalForce_), VSMALL);
+     && dF <= tolerance*max(mag(F), VSMALL);
 }
 
 

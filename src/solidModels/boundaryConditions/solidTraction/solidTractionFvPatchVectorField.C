@@ -31,12 +31,12 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
 )
 :
     fixedGradientFvPatchVectorField(p, iF),
-    traction_(Function1<vector>::New("traction", dict)),
+    traction_(PatchFunction1<vector>::New(p.patch(), "traction", dict)),
     pressure_
     (
         dict.found("pressure")
-      ? Function1<scalar>::New("pressure", dict)
-      : autoPtr<Function1<scalar>>()
+      ? PatchFunction1<scalar>::New(p.patch(), "pressure", dict)
+      : autoPtr<PatchFunction1<scalar>>()
     )
 {
     if (dict.found("value"))
@@ -66,9 +66,19 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
 )
 :
     fixedGradientFvPatchVectorField(ptf, p, iF, mapper),
-    traction_(ptf.traction_.clone()),
-    pressure_(ptf.pressure_.clone())
-{}
+    traction_(ptf.traction_->clone(p.patch()).ptr()),
+    pressure_
+    (
+        ptf.pressure_.valid() ? ptf.pressure_->clone(p.patch()).ptr() : nullptr
+    )
+{
+    // A field-valued traction comes with the old patch's faces
+    traction_->autoMap(mapper);
+    if (pressure_.valid())
+    {
+        pressure_->autoMap(mapper);
+    }
+}
 
 
 Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
@@ -77,8 +87,13 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
 )
 :
     fixedGradientFvPatchVectorField(ptf),
-    traction_(ptf.traction_.clone()),
-    pressure_(ptf.pressure_.clone())
+    traction_(ptf.traction_->clone(patch().patch()).ptr()),
+    pressure_
+    (
+        ptf.pressure_.valid()
+      ? ptf.pressure_->clone(patch().patch()).ptr()
+      : nullptr
+    )
 {}
 
 
@@ -89,8 +104,13 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
 )
 :
     fixedGradientFvPatchVectorField(ptf, iF),
-    traction_(ptf.traction_.clone()),
-    pressure_(ptf.pressure_.clone())
+    traction_(ptf.traction_->clone(patch().patch()).ptr()),
+    pressure_
+    (
+        ptf.pressure_.valid()
+      ? ptf.pressure_->clone(patch().patch()).ptr()
+      : nullptr
+    )
 {}
 
 
@@ -121,13 +141,45 @@ Foam::solidTractionFvPatchVectorField::prescribedTraction() const
 {
     const scalar t = db().time().timeOutputValue();
 
-    tmp<vectorField> ttr(new vectorField(patch().size(), traction_->value(t)));
+    tmp<vectorField> ttr(new vectorField(traction_->value(t)));
 
     if (pressure_.valid())
     {
         ttr.ref() -= pressure_->value(t)*patch().nf();
     }
     return ttr;
+}
+
+
+void Foam::solidTractionFvPatchVectorField::autoMap
+(
+    const fvPatchFieldMapper& m
+)
+{
+    fixedGradientFvPatchVectorField::autoMap(m);
+    traction_->autoMap(m);
+    if (pressure_.valid())
+    {
+        pressure_->autoMap(m);
+    }
+}
+
+
+void Foam::solidTractionFvPatchVectorField::rmap
+(
+    const fvPatchVectorField& ptf,
+    const labelList& addr
+)
+{
+    fixedGradientFvPatchVectorField::rmap(ptf, addr);
+
+    const solidTractionFvPatchVectorField& tptf =
+        refCast<const solidTractionFvPatchVectorField>(ptf);
+    traction_->rmap(tptf.traction_(), addr);
+    if (pressure_.valid() && tptf.pressure_.valid())
+    {
+        pressure_->rmap(tptf.pressure_(), addr);
+    }
 }
 
 

@@ -52,43 +52,6 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     const labelListList& faces = pair_.overlapFaces();
     const List<scalarList>& weights = pair_.overlapWeights();
 
-    // The last solve's law at the current state, for the deferred
-    // correction (nothing before the first solve)
-    labelList oldStart, oldMaster;
-    scalarList oldP, oldCoeff;
-    scalarField oldFaceP(slave.size(), 0);
-    vectorField oldTM;
-    if (in.D && hasLaw_)
-    {
-        const vectorField& D = *in.D;
-        const labelUList& fc = slave.faceCells();
-        const vectorField DM(masterCellValues(D));
-
-        oldP.setSize(coeff_.size());
-        vectorField FM(nMaster_, Zero);
-        forAll(normal_, i)
-        {
-            const vector& n = normal_[i];
-            vector F(explicitForce_[i]);
-            for (label s = start_[i]; s < start_[i+1]; ++s)
-            {
-                oldP[s] =
-                    coeff_[s]/area_[s]
-                   *(((DM[masterFace_[s]] - D[fc[i]]) & n) + offset_[s]);
-                F += area_[s]*oldP[s]*n;
-            }
-            oldFaceP[i] = (F & n)/magS[i];
-            forAll(faces[i], k)
-            {
-                FM[faces[i][k]] -= weights[i][k]*F;
-            }
-        }
-        oldTM = pair_.sumOverProcessors(FM, tag_)()/in.masterMagSf;
-        oldStart.transfer(start_);
-        oldMaster.transfer(masterFace_);
-        oldCoeff.transfer(coeff_);
-    }
-
     nMaster_ = pair_.nMasterFaces();
     normal_ = in.normal;
     explicitForce_.setSize(slave.size());
@@ -148,32 +111,119 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     area_.transfer(area);
     hasLaw_ = true;
 
-    // The deferred correction, from the last solve's law at the current
-    // state: its sub-face pressures and master tractions
-    if (oldTM.size())
+    if (in.D)
     {
+        correctDeferred(*in.D, in.masterDelta/in.masterK, in.masterMagSf);
+    }
+}
+
+
+void Foam::contactInterfaceCoupling::correctDeferred
+(
+    const vectorField& D,
+    const scalarField& masterR,
+    const scalarField& masterMagSf
+)
+{
+    // Delta = r_j (t_j(Delta).n + p_ij(Delta)) is linear in Delta with a
+    // contraction factor r_j k_ij < 1 (k_ij holds r_j in series): iterated
+    // to its fixed point at this D, so that the law is a function of D
+    // alone, not of the law of an earlier corrector
+    const vectorField DM(masterCellValues(D));
+    const scalarList base(offset_);
+    scalarList delta(offset_.size(), scalar(0));
+    scalarList p;
+    vectorField F;
+
+    const scalar baseScale =
+        returnReduce(base.size() ? max(mag(base)) : 0, maxOp<scalar>());
+
+    for (label iter = 0; iter < maxDeferredIter_; ++iter)
+    {
+        slaveForces(D, DM, F, &p);
+        const vectorField TM
+        (
+            pair_.sumOverProcessors(masterTransfer(F)(), tag_)/masterMagSf
+        );
+
+        scalar change = 0;
         forAll(normal_, i)
         {
             const vector& n = normal_[i];
             for (label s = start_[i]; s < start_[i+1]; ++s)
             {
                 const label j = masterFace_[s];
+                const scalar d = masterR[j]*((TM[j] & n) + p[s]);
+                change = max(change, mag(d - delta[s]));
+                delta[s] = d;
+                offset_[s] = base[s] + d;
+            }
+        }
 
-                // The old sub-face of the same pair, else the face's mean
-                scalar pOld = oldFaceP[i];
-                for (label o = oldStart[i]; o < oldStart[i+1]; ++o)
-                {
-                    if (oldMaster[o] == j)
-                    {
-                        pOld = oldP[o];
-                        break;
-                    }
-                }
-                offset_[s] +=
-                    in.masterDelta[j]/in.masterK[j]*((oldTM[j] & n) + pOld);
+        if (returnReduce(change, maxOp<scalar>()) <= 1e-13*baseScale)
+        {
+            break;
+        }
+
+    }
+}
+
+
+void Foam::contactInterfaceCoupling::slaveForces
+(
+    const vectorField& D,
+    const vectorField& DM,
+    vectorField& F,
+    scalarList* subPressure
+) const
+{
+    const labelUList& fc = pair_.slavePatch().faceCells();
+
+    F.setSize(normal_.size());
+    if (subPressure)
+    {
+        subPressure->setSize(coeff_.size());
+    }
+
+    forAll(normal_, i)
+    {
+        const vector& n = normal_[i];
+        F[i] = explicitForce_[i];
+        for (label s = start_[i]; s < start_[i+1]; ++s)
+        {
+            const scalar ps =
+                coeff_[s]/area_[s]
+               *(((DM[masterFace_[s]] - D[fc[i]]) & n) + offset_[s]);
+            F[i] += area_[s]*ps*n;
+            if (subPressure)
+            {
+                (*subPressure)[s] = ps;
             }
         }
     }
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterTransfer
+(
+    const vectorField& slaveForce
+) const
+{
+    // The master receives each slave face's force by the overlap weights,
+    // as one pressure per slave face
+    const labelListList& faces = pair_.overlapFaces();
+    const List<scalarList>& weights = pair_.overlapWeights();
+
+    tmp<vectorField> tFM(new vectorField(nMaster_, Zero));
+    vectorField& FM = tFM.ref();
+    forAll(faces, i)
+    {
+        forAll(faces[i], k)
+        {
+            FM[faces[i][k]] -= weights[i][k]*slaveForce[i];
+        }
+    }
+    return tFM;
 }
 
 
@@ -259,34 +309,13 @@ void Foam::contactInterfaceCoupling::forces
     scalarField& slavePressure
 ) const
 {
-    const fvPatch& slave = pair_.slavePatch();
-    const labelUList& fc = slave.faceCells();
-    const vectorField DM(masterCellValues(D));
-    const labelListList& faces = pair_.overlapFaces();
-    const List<scalarList>& weights = pair_.overlapWeights();
+    slaveForces(D, masterCellValues(D), slaveForce);
 
-    slaveForce.setSize(normal_.size());
-    slavePressure.setSize(normal_.size());
-    vectorField FM(nMaster_, Zero);
+    slavePressure = (slaveForce & normal_)/pair_.slavePatch().magSf();
 
-    forAll(normal_, i)
-    {
-        const vector& n = normal_[i];
-        vector F(explicitForce_[i]);
-        for (label s = start_[i]; s < start_[i+1]; ++s)
-        {
-            F += coeff_[s]*(((DM[masterFace_[s]] - D[fc[i]]) & n) + offset_[s])*n;
-        }
-
-        // The master receives the face's force by the overlap weights,
-        // as one pressure per slave face
-        forAll(faces[i], k)
-        {
-            FM[faces[i][k]] -= weights[i][k]*F;
-        }
-        slaveForce[i] = F;
-        slavePressure[i] = (F & n)/slave.magSf()[i];
-    }
-
-    masterForce = pair_.masterSlice(pair_.sumOverProcessors(FM, tag_)());
+    masterForce =
+        pair_.masterSlice
+        (
+            pair_.sumOverProcessors(masterTransfer(slaveForce)(), tag_)()
+        );
 }

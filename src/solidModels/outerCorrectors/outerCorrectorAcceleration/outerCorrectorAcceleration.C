@@ -1,0 +1,242 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "outerCorrectorAcceleration.H"
+#include "Enum.H"
+#include "contactStateReporter.H"
+
+#include <stdexcept>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+enum class accelerationType { none, anderson };
+
+const Foam::Enum<accelerationType> accelerationNames
+({
+    { accelerationType::none, "none" },
+    { accelerationType::anderson, "anderson" }
+});
+
+
+//- The kernel's parallel sum: the same bytes on every processor
+void sumOverProcessors(double* data, int count)
+{
+    Foam::List<Foam::scalar> l(count);
+    std::copy(data, data + count, l.begin());
+    Foam::Pstream::listCombineGather(l, Foam::plusEqOp<Foam::scalar>());
+    Foam::Pstream::listCombineScatter(l);
+    std::copy(l.begin(), l.end(), data);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::outerCorrectorAcceleration::gather(std::vector<double>& x) const
+{
+    x.clear();
+    for (const vector& v : D_.primitiveField())
+    {
+        x.insert(x.end(), v.cdata(), v.cdata() + vector::nComponents);
+    }
+    for (const fvPatchVectorField& pf : D_.boundaryField())
+    {
+        if (!pf.coupled())
+        {
+            for (const vector& v : pf)
+            {
+                x.insert(x.end(), v.cdata(), v.cdata() + vector::nComponents);
+            }
+        }
+    }
+}
+
+
+void Foam::outerCorrectorAcceleration::scatter(const std::vector<double>& x)
+{
+    std::size_t i = 0;
+    for (vector& v : D_.primitiveFieldRef())
+    {
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            v[d] = x[i++];
+        }
+    }
+
+    // Coupled patches take the neighbours' new cells. Only they are
+    // evaluated: evaluate() on a condition whose coefficients are not
+    // current would run its update (a contact update) once more
+    volVectorField::Boundary& bf = D_.boundaryFieldRef();
+    // (all sends before all receives: a schedule is not needed)
+    const Pstream::commsTypes comms =
+        Pstream::defaultCommsType == Pstream::commsTypes::nonBlocking
+      ? Pstream::commsTypes::nonBlocking
+      : Pstream::commsTypes::blocking;
+    for (fvPatchVectorField& pf : bf)
+    {
+        if (pf.coupled())
+        {
+            pf.initEvaluate(comms);
+        }
+    }
+    if (comms == Pstream::commsTypes::nonBlocking)
+    {
+        Pstream::waitRequests();
+    }
+    for (fvPatchVectorField& pf : bf)
+    {
+        if (pf.coupled())
+        {
+            pf.evaluate(comms);
+        }
+    }
+
+    for (fvPatchVectorField& pf : bf)
+    {
+        if (!pf.coupled())
+        {
+            vectorField v(pf.size());
+            for (vector& vi : v)
+            {
+                for (direction d = 0; d < vector::nComponents; ++d)
+                {
+                    vi[d] = x[i++];
+                }
+            }
+            pf == v;
+        }
+    }
+
+    // The contact reactions (they decide the next active set) from the
+    // new cells
+    contactStateReporter::updateFromCells(D_);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
+(
+    const dictionary& solidControls,
+    volVectorField& D
+)
+:
+    D_(D),
+    anderson_(),
+    nSteps_(0),
+    nResets_(0)
+{
+    const word typeName
+    (
+        solidControls.getOrDefault<word>("acceleration", "none")
+    );
+    if (!accelerationNames.found(typeName))
+    {
+        FatalIOErrorInFunction(solidControls)
+            << "Entry 'acceleration' = " << typeName << " in "
+            << solidControls.name() << " is invalid: valid are "
+            << "none (the default: the plain iteration) and anderson"
+            << " (Anderson acceleration, IQN-ILS, of the outer correctors)"
+            << exit(FatalIOError);
+    }
+
+    // The depth is checked whether or not it is used
+    c4f::coupling::AndersonParameters p;
+    p.depth = solidControls.getOrDefault<label>("andersonDepth", p.depth);
+    try
+    {
+        c4f::coupling::AndersonAcceleration::check(p);
+    }
+    catch (const std::invalid_argument&)
+    {
+        FatalIOErrorInFunction(solidControls)
+            << "Entry 'andersonDepth' = " << p.depth << " in "
+            << solidControls.name() << " is invalid: it must be an integer"
+            << " >= 1 (the difference columns kept; 5 by default)"
+            << exit(FatalIOError);
+    }
+
+    if (accelerationNames[typeName] == accelerationType::none)
+    {
+        return;
+    }
+
+    anderson_.reset
+    (
+        new c4f::coupling::AndersonAcceleration
+        (
+            p,
+            Pstream::parRun()
+          ? c4f::coupling::AndersonAcceleration::Reduction(sumOverProcessors)
+          : c4f::coupling::AndersonAcceleration::Reduction()
+        )
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::outerCorrectorAcceleration::reset()
+{
+    nSteps_ = 0;
+    nResets_ = 0;
+    if (anderson_)
+    {
+        anderson_->reset();
+    }
+}
+
+
+void Foam::outerCorrectorAcceleration::storeIterate()
+{
+    if (anderson_)
+    {
+        gather(x_);
+    }
+}
+
+
+void Foam::outerCorrectorAcceleration::accelerate(const bool restart)
+{
+    if (!anderson_)
+    {
+        return;
+    }
+
+    if (restart)
+    {
+        // D stays at G(x): the first step of the new history is plain
+        anderson_->reset();
+        ++nResets_;
+        return;
+    }
+
+    gather(g_);
+    anderson_->update(x_, g_, xNext_);
+    scatter(xNext_);
+    ++nSteps_;
+}
+
+
+void Foam::outerCorrectorAcceleration::accept()
+{
+    if (anderson_)
+    {
+        scatter(x_);
+    }
+}
+
+
+Foam::word Foam::outerCorrectorAcceleration::description() const
+{
+    if (!anderson_)
+    {
+        return "none";
+    }
+    return "anderson(" + Foam::name(anderson_->parameters().depth) + ")";
+}
