@@ -4,28 +4,48 @@
 
 #include "contactStateReporter.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Call f(reporter, patchi) for every patch of D that reports, in patch
+//  order (the same on every processor, so collective calls match)
+template<class Reporter, class Boundary, class Fn>
+void forEachReporter(Boundary& bf, Fn f)
+{
+    forAll(bf, patchi)
+    {
+        Reporter* rep = dynamic_cast<Reporter*>(&bf[patchi]);
+        if (rep)
+        {
+            f(*rep, patchi);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
 Foam::string Foam::contactStateReporter::summary(const volVectorField& D)
 {
     string s;
-    forAll(D.boundaryField(), patchi)
-    {
-        const contactStateReporter* rep =
-            dynamic_cast<const contactStateReporter*>
-            (
-                &D.boundaryField()[patchi]
-            );
-
-        if (rep)
+    forEachReporter<const contactStateReporter>
+    (
+        D.boundaryField(),
+        [&](const contactStateReporter& rep, const label patchi)
         {
             // A master patch of a contact pair has nothing of its own
-            const string state(rep->contactState());
+            const string state(rep.contactState());
             if (!state.empty())
             {
                 s += "  [" + D.mesh().boundary()[patchi].name() + ": "
                    + state + "]";
             }
         }
-    }
+    );
     return s;
 }
 
@@ -36,22 +56,17 @@ bool Foam::contactStateReporter::converged
     const scalar tolerance
 )
 {
+    // Every patch is asked, so that the reductions inside match on all
+    // processors
     bool conv = true;
-    forAll(D.boundaryField(), patchi)
-    {
-        const contactStateReporter* rep =
-            dynamic_cast<const contactStateReporter*>
-            (
-                &D.boundaryField()[patchi]
-            );
-
-        // Every patch is asked, so that the reductions inside match on
-        // all processors
-        if (rep && !rep->contactConverged(tolerance))
+    forEachReporter<const contactStateReporter>
+    (
+        D.boundaryField(),
+        [&](const contactStateReporter& rep, const label)
         {
-            conv = false;
+            conv = rep.contactConverged(tolerance) && conv;
         }
-    }
+    );
     return conv;
 }
 
@@ -59,27 +74,26 @@ bool Foam::contactStateReporter::converged
 bool Foam::contactStateReporter::activeSetChanged(const volVectorField& D)
 {
     label changes = 0;
-    for (const fvPatchVectorField& pf : D.boundaryField())
-    {
-        const contactStateReporter* rep =
-            dynamic_cast<const contactStateReporter*>(&pf);
-        if (rep)
+    forEachReporter<const contactStateReporter>
+    (
+        D.boundaryField(),
+        [&](const contactStateReporter& rep, const label)
         {
-            changes += rep->activeSetChanges();
+            changes += rep.activeSetChanges();
         }
-    }
+    );
     return changes > 0;
 }
 
 
 void Foam::contactStateReporter::updateFromCells(volVectorField& D)
 {
-    for (fvPatchVectorField& pf : D.boundaryFieldRef())
-    {
-        contactStateReporter* rep = dynamic_cast<contactStateReporter*>(&pf);
-        if (rep)
+    forEachReporter<contactStateReporter>
+    (
+        D.boundaryFieldRef(),
+        [](contactStateReporter& rep, const label)
         {
-            rep->updateFromCells();
+            rep.updateFromCells();
         }
-    }
+    );
 }

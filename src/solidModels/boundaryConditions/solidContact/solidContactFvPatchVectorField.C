@@ -929,7 +929,8 @@ bool Foam::solidContactFvPatchVectorField::contactConverged
         return true;
     }
 
-    const label changes = returnReduce(cond_.nChanged, sumOp<label>());
+    const label changes = activeSetChanges();
+
     // The change of the normal force in this corrector: from the state it
     // started from to the solve's (the pressures evaluate() just set), the
     // force residual of the fixed-point map, whatever step the outer loop

@@ -38,8 +38,7 @@ Foam::contactInterfaceCoupling::contactInterfaceCoupling
 :
     pair_(pair),
     start_(1, 0),
-    nMaster_(0),
-    hasLaw_(false)
+    nMaster_(0)
 {}
 
 
@@ -109,7 +108,6 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     coeff_.transfer(coeff);
     offset_.transfer(offset);
     area_.transfer(area);
-    hasLaw_ = true;
 
     if (in.D)
     {
@@ -164,7 +162,6 @@ void Foam::contactInterfaceCoupling::correctDeferred
         {
             break;
         }
-
     }
 }
 

@@ -30,11 +30,6 @@ void Foam::functionObjects::contactReport::findSlaves()
 
     const volVectorField& D = mesh_.lookupObject<volVectorField>(fieldName_);
 
-    // Set by the solver after each load step
-    const label converged =
-        mesh_.data::lookupOrDefault<bool>("solidMechanicsConverged", false)
-      ? 1 : 0;
-
     DynamicList<label> slaves;
     wordList names;
     forAll(D.boundaryField(), patchi)

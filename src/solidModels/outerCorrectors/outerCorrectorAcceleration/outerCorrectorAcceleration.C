@@ -127,9 +127,7 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
 )
 :
     D_(D),
-    anderson_(),
-    nSteps_(0),
-    nResets_(0)
+    anderson_()
 {
     const word typeName
     (
@@ -183,8 +181,6 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
 
 void Foam::outerCorrectorAcceleration::reset()
 {
-    nSteps_ = 0;
-    nResets_ = 0;
     if (anderson_)
     {
         anderson_->reset();
@@ -212,14 +208,12 @@ void Foam::outerCorrectorAcceleration::accelerate(const bool restart)
     {
         // D stays at G(x): the first step of the new history is plain
         anderson_->reset();
-        ++nResets_;
         return;
     }
 
     gather(g_);
     anderson_->update(x_, g_, xNext_);
     scatter(xNext_);
-    ++nSteps_;
 }
 
 
@@ -229,14 +223,4 @@ void Foam::outerCorrectorAcceleration::accept()
     {
         scatter(x_);
     }
-}
-
-
-Foam::word Foam::outerCorrectorAcceleration::description() const
-{
-    if (!anderson_)
-    {
-        return "none";
-    }
-    return "anderson(" + Foam::name(anderson_->parameters().depth) + ")";
 }
