@@ -191,9 +191,9 @@ def serial_parallel_agree(res, serial, parallel, name, tol):
     res.add(name, err <= tol, err, 0.0, err, tol)
 
 
-def contact_serial_parallel_agree(res, serial, parallel, name, tol):
+def contact_serial_parallel_agree(res, serial, parallel, name, tol, ref="serial"):
     """Peak pressure and total normal force of the slave patch, from the
-    contactReport rows of the serial and the decomposed run."""
+    contactReport rows of the serial (or `ref`) and the decomposed run."""
     s = contactreport.last_row(serial, "cylinderContact")
     p = contactreport.last_row(parallel, "cylinderContact")
     if s is None or p is None:
@@ -201,7 +201,7 @@ def contact_serial_parallel_agree(res, serial, parallel, name, tol):
         return
     for col, what in (("normalForce", "normal_force"), ("maxPressure", "peak_pressure")):
         err = abs(p[col] - s[col]) / abs(s[col]) if s[col] else 1.0
-        res.add("%s/%s_equals_serial" % (name, what), err <= tol, p[col], s[col], err, tol)
+        res.add("%s/%s_equals_%s" % (name, what, ref), err <= tol, p[col], s[col], err, tol)
 
 
 def restart_reproduces(res, finished, name):
@@ -311,14 +311,14 @@ def main():
             serial_parallel_agree(res, serial, par,
                                   "plateHoleParallel/D_equals_serial", 1e-6)
 
-        # Anderson acceleration (opt-in): the same answer as the plain
-        # iteration within what a 1e-9 residual leaves (measured 1.5e-6 of
-        # D), and Kirsch's checks
-        print("== plateHole: acceleration anderson", flush=True)
-        acc = tutorial_case(res, "plateHole", "plateHoleAnderson",
-                            controls="acceleration anderson;")
-        if os.path.exists(os.path.join(acc, "log.solidContactFoam")):
-            serial_parallel_agree(res, serial, acc, "plateHoleAnderson/D_equals_plain", 1e-5)
+        # The plain iteration (acceleration none): the same answer as the
+        # default accelerated one within what a 1e-9 residual leaves
+        # (measured 4e-8 of D), and Kirsch's checks
+        print("== plateHole: acceleration none", flush=True)
+        plain = tutorial_case(res, "plateHole", "plateHolePlain",
+                              controls="acceleration none;")
+        if os.path.exists(os.path.join(plain, "log.solidContactFoam")):
+            serial_parallel_agree(res, serial, plain, "plateHolePlain/D_equals_accelerated", 1e-6)
 
     if want("contactPatchTest"):
         for method in ("lagrangeMultiplier", "penalty"):
@@ -331,12 +331,12 @@ def main():
     if want("contactPatchTest3D"):
         # The 3D patch test with non-matching faces in both directions,
         # the normal along an axis and turned 30 degrees about (1, 2, 3),
-        # nu 0 and 0.3. Penalty with nu = 0.3 on the unturned mesh is left
-        # out: it stalls (the step stops the run), see the convergence issue.
+        # nu 0 and 0.3.
         variants = [("lagrangeMultiplier", []), ("lagrangeMultiplier", ["-rotate"]),
                     ("lagrangeMultiplier", ["-nu", "0.3"]),
                     ("lagrangeMultiplier", ["-rotate", "-nu", "0.3"]),
                     ("penalty", []), ("penalty", ["-rotate"]),
+                    ("penalty", ["-nu", "0.3"]),
                     ("penalty", ["-rotate", "-nu", "0.3"])]
         for method, opts in variants:
             tag = "".join(o.lstrip("-").replace(".", "") for o in opts)
@@ -350,9 +350,14 @@ def main():
             print("== hertzCylinder: Hertz line contact, %s" % method, flush=True)
             cases[method] = tutorial_case(res, "hertzCylinder", "hertzCylinder_" + method,
                                           ["-method", method])
-        print("== hertzCylinder: lagrangeMultiplier, acceleration anderson", flush=True)
-        tutorial_case(res, "hertzCylinder", "hertzCylinder_lagrangeMultiplier_anderson",
-                      ["-method", "lagrangeMultiplier"], controls="acceleration anderson;")
+        print("== hertzCylinder: lagrangeMultiplier, acceleration none", flush=True)
+        plain = tutorial_case(res, "hertzCylinder", "hertzCylinder_lagrangeMultiplier_plain",
+                              ["-method", "lagrangeMultiplier"], controls="acceleration none;")
+        # The accelerated iterate it stops at is a fixed point of the
+        # corrector: the same force and peak as the plain iteration's
+        # (measured 6e-10 relative) within what the 1e-9 residual leaves
+        contact_serial_parallel_agree(res, plain, cases["lagrangeMultiplier"],
+                                      "hertzCylinderAccelerated", 1e-7, ref="plain")
         vtk_written(res, cases["lagrangeMultiplier"], "hertzCylinder_lagrangeMultiplier",
                     ["D", "sigma", "contactPressure", "contactGap", "contactTraction",
                      "contactActive"])

@@ -805,6 +805,14 @@ void Foam::solidContactFvPatchVectorField::updateFromCells()
         master_
       ? scalarField(-(traction_ & patch().nf()))
       : scalarField(traction_ & pair_->normal());
+
+    // The face values follow from the cells and the traction, as after a
+    // solve: set from outside a solve (an accelerated iterate), a face
+    // value would otherwise disagree with the gradient grad D reads
+    Field<vector>::operator=
+    (
+        patchInternalField() + gradient()/patch().deltaCoeffs()
+    );
 }
 
 

@@ -25,7 +25,11 @@ Foam::tmp<Foam::Field<Type>> Foam::contactInterfaceCoupling::masterCellValues
 Foam::vector Foam::contactInterfaceCoupling::implicitWeights(const vector& n)
 {
     const scalar n1 = mag(n.x()) + mag(n.y()) + mag(n.z());
-    return n1*cmptMag(n);
+    return max
+    (
+        n1*cmptMag(n),
+        vector::uniform(minImplicitWeight_)
+    );
 }
 
 
