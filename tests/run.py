@@ -350,6 +350,12 @@ def main():
             print("== hertzCylinder: Hertz line contact, %s" % method, flush=True)
             cases[method] = tutorial_case(res, "hertzCylinder", "hertzCylinder_" + method,
                                           ["-method", method])
+        # The second mesh level (4x the cells, 46 slave faces in contact):
+        # the mesh the plain iteration stalled on before the interface was
+        # implicit
+        print("== hertzCylinder: -refine 2, lagrangeMultiplier", flush=True)
+        tutorial_case(res, "hertzCylinder", "hertzCylinder_refine2",
+                      ["-method", "lagrangeMultiplier", "-refine", "2"])
         print("== hertzCylinder: lagrangeMultiplier, acceleration none", flush=True)
         plain = tutorial_case(res, "hertzCylinder", "hertzCylinder_lagrangeMultiplier_plain",
                               ["-method", "lagrangeMultiplier"], controls="acceleration none;")
