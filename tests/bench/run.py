@@ -2,19 +2,33 @@
 """contact4foam benchmarks (`make bench`). Prints ratios measured side by
 side in this one run; nothing here is asserted.
 
+Convergence: one table of the outer correctors, the wall time per load step
+and whether the step converged, for each case and problem with the plain
+iteration (acceleration none) and the accelerated default (Anderson,
+andersonDepth 15). The cases: plateHole (no contact), hertzCylinder on the
+default mesh and at 4x the cells (every cell count of blockMeshDict times
+2, what its Allrun's -refine 2 does) and the four contactPatchTest3D
+variants (axis-aligned, -rotate, -nu 0.3, both). The problems: the contact-
+free equivalent, the Lagrange multiplier and the penalty method; each
+contact row gives its correctors over those of its contact-free equivalent
+with the same iteration, the segregated solver's floor for that mesh.
+hertzCylinder's contact-free equivalent is built from the converged
+Lagrange multiplier run (c4fpost.contactfree: the slave's displacement and
+the master's traction prescribed), contactPatchTest3D's is its Allrun's
+-noContact (the exact state prescribed). Every run is capped at 5000
+correctors with onNonConvergence continue, so a stall is reported. The
+table is also written as markdown to $C4F_PREFIX/run/bench/convergence.md.
+
+hertzCylinder accuracy: the peak-pressure and half-width errors against
+Hertz on the coarse (half the cell counts), the default and the refined
+mesh; and the contact update time (search, method, transfer), per
+corrector and as a share of the solver's wall time, with the search tree
+rebuilt every corrector against reused until the master has moved 0.1 mm.
+
 plateHole refinement: the Kirsch error at the hole and the whole-field L2
 error for four meshes (each level halves the cell size), the observed
-order between levels, the correctors and the wall time per level, and
-the serial/parallel wall-time ratio on the finest mesh.
-
-hertzCylinder: the peak-pressure and half-width errors against Hertz on a
-coarse and the default mesh (Lagrange multiplier), then on the default
-mesh the outer correctors and wall time of the load step for the
-Lagrange multiplier, the implicit (Robin) penalty and the explicit
-relaxed penalty, with the share of the wall time the contact update
-(search, method, transfer) takes; and the contact update time with the
-search tree rebuilt every corrector against reused until the master has
-moved 0.1 mm.
+order between levels, the correctors and the wall time per level, and the
+serial/parallel wall-time ratio on the finest mesh.
 
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
@@ -29,47 +43,347 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "src/postProcessing/python"))
 sys.path.insert(0, os.path.join(ROOT, "tutorials/plateHole/validation"))
+sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
 
 import numpy as np  # noqa: E402
-from c4fpost import foamio, kirsch  # noqa: E402
-import compareKirsch  # noqa: E402
-sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
+from c4fpost import contactfree, foamio, kirsch  # noqa: E402
 import compareHertz  # noqa: E402
+import compareKirsch  # noqa: E402
 
 PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 WORK = os.path.join(PREFIX, "run", "bench")
+SOLVER = "solidContactFoam"
+
+# The outer-corrector settings of the convergence runs: a stall is a row
+# with converged = no, not a stopped bench
+CAPPED = {"nCorrectors": "5000", "onNonConvergence": "continue"}
+ITERATIONS = (("plain", dict(CAPPED, acceleration="none")),
+              ("accelerated", CAPPED))            # the default: anderson, depth 15
+PROBLEMS = ("contact-free", "lagrangeMultiplier", "penalty")
 
 
 def sh(cmd, cwd):
     p = subprocess.run(cmd, cwd=cwd, shell=True, stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True)
+                       stderr=subprocess.STDOUT, text=True, stdin=subprocess.DEVNULL)
     if p.returncode:
         sys.exit("bench: '%s' failed in %s\n%s" % (cmd, cwd, p.stdout[-2000:]))
     return p.stdout
 
 
-def plate_case(n, parallel=False):
-    case = os.path.join(WORK, "plateHole_%d%s" % (n, "_par" if parallel else ""))
+def set_solid_mechanics(case, entries):
+    """Set `entries` (keyword: value) in the solidMechanics dictionary of
+    system/fvSolution: an entry already there is replaced, others added."""
+    fvs = os.path.join(case, "system/fvSolution")
+    text = open(fvs).read()
+    m = re.search(r"^solidMechanics\s*\{(.*?)^\}", text, flags=re.M | re.S)
+    if m is None:
+        sys.exit("bench: no solidMechanics dictionary in " + fvs)
+    body = m.group(1)
+    for key, value in entries.items():
+        body, n = re.subn(r"^(\s*)%s\s+[^;]*;" % key, r"\g<1>%s %s;" % (key, value), body,
+                          flags=re.M)
+        if n == 0:
+            body += "    %s %s;\n" % (key, value)
+    open(fvs, "w").write(text[:m.start(1)] + body + text[m.end(1):])
+
+
+def timed_solver_dir():
+    """A directory with a `solidContactFoam` that runs the real one and
+    writes its wall time (time.time() around it) and exit code to
+    wall.solidContactFoam in the case: put first on PATH, it times the
+    solver run that a tutorial's Allrun starts, and nothing else."""
+    d = os.path.join(WORK, "timedSolver")
+    os.makedirs(d, exist_ok=True)
+    real = shutil.which(SOLVER)
+    if real is None:
+        sys.exit("bench: %s not found; source etc/bashrc and build first" % SOLVER)
+    exe = os.path.join(d, SOLVER)
+    with open(exe, "w") as f:
+        f.write("#!/usr/bin/python3\n"
+                "import subprocess, sys, time\n"
+                "t0 = time.time()\n"
+                "rc = subprocess.call([%r] + sys.argv[1:])\n"
+                "with open('wall.%s', 'w') as f:\n"
+                "    f.write('%%.6f %%d\\n' %% (time.time() - t0, rc))\n"
+                "sys.exit(rc)\n" % (real, SOLVER))
+    os.chmod(exe, 0o755)
+    return d
+
+
+def bench_case(name, src, entries=None, prepare=None, allrun=None, parallel=False,
+               require=False):
+    """One solver run on a fresh copy of `src` (a tutorial, or a case run
+    before) in WORK/name: `entries` set in solidMechanics, then either
+    prepare(case) sets it up (mesh included) and the solver runs here, or
+    its Allrun runs with the arguments `allrun` (the solver through the
+    timing wrapper). The wall time is the solver's alone. Returns the case,
+    the wall time per load step, the correctors (summed over the steps),
+    whether every step converged, and the last step's residual and contact
+    update time (None without contact). With `require` a failed or
+    unconverged run stops the bench."""
+    case = os.path.join(WORK, name)
     shutil.rmtree(case, ignore_errors=True)
-    shutil.copytree(os.path.join(ROOT, "tutorials/plateHole"), case,
-                    ignore=shutil.ignore_patterns("[1-9]*", "processor*", "log.*", "VTK", "*.png"))
-    bmd = os.path.join(case, "system/blockMeshDict")
-    text = open(bmd).read()
-    text = re.sub(r"^nRadial\s+\d+;", "nRadial %d;" % n, text, flags=re.M)
-    text = re.sub(r"^nArc\s+\d+;", "nArc %d;" % (2 * n // 3), text, flags=re.M)
-    open(bmd, "w").write(text)
-    sh("blockMesh", case)
-    if parallel:
-        sh("decomposePar", case)
-        t0 = time.time()
-        log = sh("mpirun -np 2 solidContactFoam -parallel", case)
-        wall = time.time() - t0
-        sh("reconstructPar -latestTime", case)
+    shutil.copytree(src, case, ignore=shutil.ignore_patterns(
+        "[1-9]*", "processor*", "log.*", "VTK", "postProcessing", "*.png", "checks.json",
+        "wall." + SOLVER))
+    if entries:
+        set_solid_mechanics(case, entries)
+    logfile = os.path.join(case, "log." + SOLVER)
+    if allrun is not None:
+        env = dict(os.environ, PATH=timed_solver_dir() + os.pathsep + os.environ["PATH"])
+        with open(os.path.join(case, "log.Allrun"), "w") as f:
+            subprocess.run(["./Allrun"] + list(allrun), cwd=case, env=env, stdout=f,
+                           stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+        try:
+            wall, rc = open(os.path.join(case, "wall." + SOLVER)).read().split()
+            wall, rc = float(wall), int(rc)
+        except (OSError, ValueError):
+            wall, rc = float("nan"), -1          # Allrun stopped before the solver
     else:
-        t0 = time.time()
-        log = sh("solidContactFoam", case)
-        wall = time.time() - t0
-    ncorr = int(re.findall(r"correctors = (\d+)", log)[-1])
+        if prepare is not None:
+            prepare(case)
+        cmd = [SOLVER]
+        if parallel:
+            sh("decomposePar", case)
+            cmd = ["mpirun", "-np", "2", SOLVER, "-parallel"]
+        with open(logfile, "w") as f:
+            t0 = time.time()
+            rc = subprocess.run(cmd, cwd=case, stdout=f, stderr=subprocess.STDOUT,
+                                stdin=subprocess.DEVNULL).returncode
+            wall = time.time() - t0
+        if parallel and rc == 0:
+            sh("reconstructPar -latestTime", case)
+    log = open(logfile).read() if os.path.exists(logfile) else ""
+    steps = re.findall(r"^Time = \S+\s+correctors = (\d+)\s+residual = (\S+)(.*)$", log, flags=re.M)
+    converged = (rc == 0 and bool(steps) and not any("NOT CONVERGED" in s[2] for s in steps)
+                 and re.search(r"^End\s*$", log, flags=re.M) is not None)
+    if require and not converged:
+        sys.exit("bench: %s did not converge (rc=%d), see %s" % (name, rc, logfile))
+    contact = re.search(r"contactTime = (\S+)", steps[-1][2]) if steps else None
+    return dict(name=name, case=case, rc=rc, converged=converged, steps=len(steps),
+                ncorr=sum(int(s[0]) for s in steps) if steps else None,
+                residual=float(steps[-1][1]) if steps else None,
+                wall=wall, wall_step=wall / max(1, len(steps)),
+                contact=float(contact.group(1)) if contact else None)
+
+
+# --------------------------------------------------------------------------
+def hertz_prepare(level=1.0, method="lagrangeMultiplier", rebuild=None):
+    """Set up the hertzCylinder tutorial: every cell count of blockMeshDict
+    scaled by `level` (2: what its Allrun's -refine 2 does), the contact
+    method (and the search tree's rebuild tolerance), blockMesh."""
+    def prepare(case):
+        bmd = os.path.join(case, "system/blockMeshDict")
+        text = open(bmd).read()
+
+        def scale(m):
+            return "%s%d%s" % (m.group(1), max(1, round(int(m.group(2)) * level)), m.group(3))
+        # counts in the multi-grading tuples and the n* macros
+        text = re.sub(r"^\w+Grading\s.*$",
+                      lambda line: re.sub(r"(\(\s*[0-9.]+\s+)(\d+)(\s+[0-9.]+\s*\))", scale,
+                                          line.group(0)),
+                      text, flags=re.M)
+        text = re.sub(r"^(n\w+\s+)(\d+)(;)", scale, text, flags=re.M)
+        open(bmd, "w").write(text)
+        d = os.path.join(case, "0/D")
+        text = open(d).read()
+        text = re.sub(r"^(\s*method\s+)\w+;", r"\g<1>%s;" % method, text, flags=re.M)
+        if rebuild is not None:
+            text = re.sub(r"^(\s*method\s+\w+;)", r"\1 rebuildTolerance %g;" % rebuild, text,
+                          flags=re.M)
+        open(d, "w").write(text)
+        sh("blockMesh", case)
+    return prepare
+
+
+def contact_free_prepare(contact):
+    """The contact-free equivalent of the converged hertzCylinder run
+    `contact` (copied with its mesh): its converged time brought in and
+    turned into 0/D by c4fpost.contactfree."""
+    def prepare(case):
+        t = foamio.latest_time(contact)
+        shutil.copytree(os.path.join(contact, t), os.path.join(case, t))
+        contactfree.make_contact_free(case, t, "cylinderContact", "blockContact")
+    return prepare
+
+
+def hertz_accuracy(r):
+    res = compareHertz.compare(r["case"])
+    checks = {c["name"].split("/")[-1]: c for c in res["checks"]}
+    cells = re.search(r"^\s*cells:\s+(\d+)", sh("checkMesh -constant", r["case"]), flags=re.M)
+    return dict(r, cells=int(cells.group(1)), p0=checks["peak_pressure"]["error"],
+                a=checks["contact_half_width"]["error"])
+
+
+def convergence_rows():
+    """Run every case x problem x iteration of the convergence table;
+    returns the rows in table order and the runs by key."""
+    runs = {}
+    tut = os.path.join(ROOT, "tutorials")
+    cases = []
+
+    print("convergence runs:", flush=True)
+
+    def note(key, r):
+        runs[key] = r
+        if r is None:
+            state = "not run"
+        else:
+            state = "%s correctors, %.2f s" % (r["ncorr"], r["wall"])
+            if not r["converged"]:
+                state += ", NOT CONVERGED (rc=%d)" % r["rc"]
+        print("  %-30s %-18s %-11s %s" % (key + (state,)), flush=True)
+
+    # plateHole: no contact
+    label = "plateHole"
+    cases.append((label, ("contact-free",)))
+    for it, entries in ITERATIONS:
+        note((label, "contact-free", it),
+             bench_case("conv_plateHole_" + it, os.path.join(tut, "plateHole"), entries,
+                        prepare=lambda case: sh("blockMesh", case)))
+
+    # hertzCylinder: the contact-free equivalent from the converged LM run
+    for level, label in ((1, "hertzCylinder"), (2, "hertzCylinder -refine 2")):
+        cases.append((label, PROBLEMS))
+        tag = "hertz" if level == 1 else "hertz_refine%d" % level
+        for it, entries in ITERATIONS:
+            for method in ("lagrangeMultiplier", "penalty"):
+                note((label, method, it),
+                     bench_case("conv_%s_%s_%s" % (tag, method, it),
+                                os.path.join(tut, "hertzCylinder"), entries,
+                                prepare=hertz_prepare(level, method)))
+            lm = runs[(label, "lagrangeMultiplier", it)]
+            note((label, "contact-free", it),
+                 bench_case("conv_%s_contactFree_%s" % (tag, it), lm["case"], entries,
+                            prepare=contact_free_prepare(lm["case"]))
+                 if lm["converged"] else None)
+
+    # contactPatchTest3D: -noContact prescribes the exact state
+    for variant in ((), ("-rotate",), ("-nu", "0.3"), ("-rotate", "-nu", "0.3")):
+        label = " ".join(("contactPatchTest3D",) + variant)
+        cases.append((label, PROBLEMS))
+        tag = "".join("_" + o.lstrip("-").replace(".", "") for o in variant)
+        for problem in PROBLEMS:
+            args = ["-noContact"] if problem == "contact-free" else ["-method", problem]
+            for it, entries in ITERATIONS:
+                note((label, problem, it),
+                     bench_case("conv_patch3d%s_%s_%s" % (tag, problem, it),
+                                os.path.join(tut, "contactPatchTest3D"), entries,
+                                allrun=args + list(variant)))
+
+    rows = []
+    for label, problems in cases:
+        for problem in problems:
+            for it, _ in ITERATIONS:
+                r = runs.get((label, problem, it))
+                free = runs.get((label, "contact-free", it))
+                ratio = ""
+                if problem != "contact-free":
+                    ratio = ("%.2f" % (r["ncorr"] / free["ncorr"])
+                             if r and free and r["ncorr"] and free["ncorr"] else "n/a")
+                if r is None:
+                    rows.append((label, problem, it, "-", "-", "not run", ratio))
+                else:
+                    rows.append((label, problem, it,
+                                 "-" if r["ncorr"] is None else "%d" % r["ncorr"],
+                                 "%.3f" % r["wall_step"],
+                                 "yes" if r["converged"] else "no", ratio))
+    return rows, runs
+
+
+def convergence_table(rows, runs):
+    head = ("case", "problem", "iteration", "correctors", "wall time per step [s]",
+            "converged", "correctors / contact-free")
+    widths = [max(len(x[i]) for x in (head,) + tuple(rows)) for i in range(len(head))]
+
+    def line(cells):
+        return "| " + " | ".join(c.ljust(w) for c, w in zip(cells, widths)) + " |"
+    lines = [line(head), "|" + "|".join("-" * (w + 2) for w in widths) + "|"]
+    lines += [line(r) for r in rows]
+    notfree = [k[0] for k, r in runs.items() if k[1] == "contact-free" and r is None]
+    notes = [
+        "",
+        "plain: `acceleration none;` in solidMechanics of system/fvSolution; accelerated: the"
+        " default (`acceleration anderson; andersonDepth 15;`). Every run: `nCorrectors 5000;"
+        " onNonConvergence continue;`, so converged = no is a step that stopped at the cap"
+        " (or a failed solver run). All cases are one load step; the wall time is the"
+        " solver's alone (start-up included, meshing not).",
+        "",
+        "Contact-free equivalent: hertzCylinder's is the Lagrange multiplier run with the same"
+        " iteration, converged, with its slave face displacement prescribed as fixedValue and"
+        " its master contact traction as solidTraction (c4fpost.contactfree);"
+        " contactPatchTest3D's is its `Allrun -noContact` (the exact displacement and pressure"
+        " prescribed); plateHole has no contact.",
+        "",
+        "The penalty rows' ratio is taken against the same contact-free equivalent as the"
+        " Lagrange multiplier rows (hertzCylinder: the one built from the Lagrange multiplier"
+        " run; contactPatchTest3D: the exact state), not one built from the penalty solution,"
+        " which differs from it by the penalty's penetration.",
+    ]
+    if notfree:
+        notes += ["", "Not built (its Lagrange multiplier run did not converge): the contact-free"
+                  " equivalent of " + ", ".join(sorted(set(notfree))) + "."]
+    notes += ["", "Measured on a machine with %d cpus (os.cpu_count()), one solver process at a"
+              " time." % os.cpu_count()]
+    text = "\n".join(lines + notes) + "\n"
+    print("\nConvergence: outer correctors per load step, contact against contact-free\n")
+    print(text, flush=True)
+    md = os.path.join(WORK, "convergence.md")
+    with open(md, "w") as f:
+        f.write("# contact4foam convergence (make bench)\n\n" + text)
+    print("(written to %s)" % md, flush=True)
+
+
+def hertz_bench(runs):
+    """Accuracy against Hertz and the search tree rebuilt or reused, from
+    the accelerated runs of the convergence table and two more."""
+    accel = dict(ITERATIONS)["accelerated"]
+    default = runs[("hertzCylinder", "lagrangeMultiplier", "accelerated")]
+    print("\nhertzCylinder refinement against Hertz (accelerated; * not converged)")
+    print("%-20s %8s %8s %14s %14s %10s %10s" % ("method", "level", "cells", "p0 error", "a error [m]",
+                                                 "correctors", "wall [s]"))
+    coarse = bench_case("hertz_coarse", os.path.join(ROOT, "tutorials/hertzCylinder"), accel,
+                        prepare=hertz_prepare(0.5))
+    for method, level, r in (
+            ("lagrangeMultiplier", 0.5, coarse),
+            ("lagrangeMultiplier", 1.0, default),
+            ("lagrangeMultiplier", 2.0, runs[("hertzCylinder -refine 2", "lagrangeMultiplier", "accelerated")]),
+            ("penalty", 2.0, runs[("hertzCylinder -refine 2", "penalty", "accelerated")])):
+        if r["ncorr"] is None:
+            print("%-20s %8.2f  run failed, see %s" % (method, level, r["case"]))
+            continue
+        a = hertz_accuracy(r)
+        print("%-20s %8.2f %8d %14.4g %14.4g %9d%s %10.2f" % (method, level, a["cells"], a["p0"], a["a"],
+                                                              a["ncorr"], "" if a["converged"] else "*",
+                                                              a["wall"]))
+
+    print("\nhertzCylinder, default mesh, Lagrange multiplier (accelerated): search tree rebuilt"
+          " every corrector or reused")
+    print("%-34s %10s %16s %18s %14s" % ("search", "correctors", "contact time [s]", "per corrector [ms]",
+                                         "share of wall"))
+    reuse = bench_case("hertz_treeReuse", os.path.join(ROOT, "tutorials/hertzCylinder"), accel,
+                       prepare=hertz_prepare(rebuild=1e-4))
+    for label, r in (("rebuild every corrector", default), ("reuse until 0.1 mm of motion", reuse)):
+        if r["contact"] is None:
+            print("%-34s  run failed, see %s" % (label, r["case"]))
+            continue
+        print("%-34s %9d%s %16.3f %18.3f %13.1f%%" % (label, r["ncorr"], "" if r["converged"] else "*",
+                                                     r["contact"], 1e3 * r["contact"] / r["ncorr"],
+                                                     100 * r["contact"] / r["wall"]))
+
+
+def plate_case(n, parallel=False):
+    def prepare(case):
+        bmd = os.path.join(case, "system/blockMeshDict")
+        text = open(bmd).read()
+        text = re.sub(r"^nRadial\s+\d+;", "nRadial %d;" % n, text, flags=re.M)
+        text = re.sub(r"^nArc\s+\d+;", "nArc %d;" % (2 * n // 3), text, flags=re.M)
+        open(bmd, "w").write(text)
+        sh("blockMesh", case)
+    r = bench_case("plateHole_%d%s" % (n, "_par" if parallel else ""),
+                   os.path.join(ROOT, "tutorials/plateHole"), prepare=prepare, parallel=parallel,
+                   require=True)
+    case = r["case"]
     # The hole error is the tutorial's own check; only the field L2 is extra
     res = compareKirsch.compare(case)
     e_hole = res["checks"][0]["value"]
@@ -78,135 +392,34 @@ def plate_case(n, parallel=False):
     s = foamio.read_internal(os.path.join(case, t, "sigma"))
     ref, _, _ = kirsch.stress_xy(C[:, 0], C[:, 1], compareKirsch.T, compareKirsch.R)
     e_l2 = np.sqrt(np.mean((s[:, 0] - ref) ** 2)) / compareKirsch.T
-    return dict(n=n, cells=len(C), wall=wall, ncorr=ncorr, e_hole=e_hole, e_l2=e_l2)
+    return dict(r, n=n, cells=len(C), e_hole=e_hole, e_l2=e_l2)
 
 
-def hertz_case(name, level=1.0, method="lagrangeMultiplier", implicit=True, ncorr=None,
-               rebuild=None):
-    """The hertzCylinder tutorial with every cell count scaled by `level`."""
-    case = os.path.join(WORK, "hertz_" + name)
-    shutil.rmtree(case, ignore_errors=True)
-    shutil.copytree(os.path.join(ROOT, "tutorials/hertzCylinder"), case,
-                    ignore=shutil.ignore_patterns("[1-9]*", "processor*", "log.*", "VTK", "*.png"))
-    bmd = os.path.join(case, "system/blockMeshDict")
-    text = open(bmd).read()
-
-    def scale(m):
-        return "%s%d%s" % (m.group(1), max(1, round(int(m.group(2)) * level)), m.group(3))
-    # counts in the multi-grading tuples and the n* macros
-    text = re.sub(r"^\w+Grading\s.*$",
-                  lambda line: re.sub(r"(\(\s*[0-9.]+\s+)(\d+)(\s+[0-9.]+\s*\))", scale, line.group(0)),
-                  text, flags=re.M)
-    text = re.sub(r"^(n\w+\s+)(\d+)(;)", scale, text, flags=re.M)
-    open(bmd, "w").write(text)
-    d = os.path.join(case, "0/D")
-    text = open(d).read()
-    text = re.sub(r"^(\s*method\s+)\w+;", r"\g<1>%s;" % method, text, flags=re.M)
-    if rebuild is not None:
-        text = re.sub(r"^(\s*method\s+\w+;)", r"\1 rebuildTolerance %g;" % rebuild, text, flags=re.M)
-    if not implicit:
-        text = re.sub(r"^(\s*penaltyScale\s+[^;]+;)", r"\1 implicit no;", text, flags=re.M)
-    open(d, "w").write(text)
-    if ncorr:
-        # A capped run is reported, not stopped
-        fvs = os.path.join(case, "system/fvSolution")
-        text = re.sub(r"^(\s*nCorrectors\s+)\d+;", r"\g<1>%d; onNonConvergence continue;" % ncorr,
-                      open(fvs).read(), flags=re.M)
-        open(fvs, "w").write(text)
-    sh("blockMesh", case)
-    t0 = time.time()
-    log = sh("solidContactFoam", case)
-    wall = time.time() - t0
-    step = re.findall(r"^Time = .*$", log, flags=re.M)[-1]
-    res = compareHertz.compare(case)
-    checks = {c["name"].split("/")[-1]: c for c in res["checks"]}
-    return dict(
-        name=name, level=level, wall=wall,
-        cells=int(re.search(r"^\s*cells:\s+(\d+)", sh("checkMesh -constant", case), flags=re.M).group(1)),
-        ncorr=int(re.search(r"correctors = (\d+)", step).group(1)),
-        residual=float(re.search(r"residual = (\S+)", step).group(1)),
-        contact=float(re.search(r"contactTime = (\S+)", step).group(1)),
-        p0=checks["peak_pressure"]["error"],
-        a=checks["contact_half_width"]["error"],
-        a_tol=checks["contact_half_width"]["tolerance"])
-
-
-def hertz_bench():
-    print("\nhertzCylinder refinement (Lagrange multiplier)")
-    print("%8s %8s %14s %14s %10s %10s" % ("level", "cells", "p0 error", "a error [m]", "correctors", "wall [s]"))
-    for r in (hertz_case("coarse", 0.5), hertz_case("default", 1.0), hertz_case("refined", 2.0),
-              hertz_case("refinedPenalty", 2.0, method="penalty")):
-        print("%8.2f %8d %14.4g %14.4g %10d %10.2f" % (r["level"], r["cells"], r["p0"], r["a"], r["ncorr"], r["wall"]))
-
-    print("\nhertzCylinder, default mesh, one load step: method against method")
-    print("%-22s %10s %12s %10s %14s %10s" % ("method", "correctors", "residual", "wall [s]", "contact share", "p0 error"))
-    rows = [hertz_case("lagrangeMultiplier"),
-            hertz_case("penaltyImplicit", method="penalty"),
-            hertz_case("penaltyExplicit", method="penalty", implicit=False, ncorr=5000)]
-    for r in rows:
-        print("%-22s %10d %12.3g %10.2f %13.1f%% %10.4g" % (r["name"], r["ncorr"], r["residual"], r["wall"],
-                                                          100 * r["contact"] / r["wall"], r["p0"]))
-    print("correctors explicit/implicit penalty: %.1f (explicit capped at 5000; residual shown)"
-          % (rows[2]["ncorr"] / rows[1]["ncorr"]))
-
-    print("\nhertzCylinder, default mesh: search tree rebuilt every corrector or reused")
-    print("%-34s %10s %16s %12s" % ("search", "correctors", "contact time [s]", "per corrector [ms]"))
-    for r in (rows[0], hertz_case("lagrangeMultiplierReuse", rebuild=1e-4)):
-        label = "rebuild every corrector" if r is rows[0] else "reuse until 0.1 mm of motion"
-        print("%-34s %10d %16.3f %12.3f" % (label, r["ncorr"], r["contact"], 1e3 * r["contact"] / r["ncorr"]))
-
-
-def patch3d_case(opts):
-    """One run of the 3D patch test: its correctors and wall time."""
-    case = os.path.join(WORK, "patch3d")
-    shutil.rmtree(case, ignore_errors=True)
-    shutil.copytree(os.path.join(ROOT, "tutorials/contactPatchTest3D"), case,
-                    ignore=shutil.ignore_patterns("[1-9]*", "processor*", "log.*", "VTK", "*.png"))
-    fvs = os.path.join(case, "system/fvSolution")
-    text = re.sub(r"^(\s*nCorrectors\s+)\d+;", r"\g<1>5000; onNonConvergence continue;",
-                  open(fvs).read(), flags=re.M)
-    open(fvs, "w").write(text)
-    t0 = time.time()
-    sh("./Allrun " + opts + " > log.Allrun 2>&1 || true", case)
-    wall = time.time() - t0
-    log = open(os.path.join(case, "log.solidContactFoam")).read()
-    step = re.findall(r"^Time = .*$", log, flags=re.M)[-1]
-    return int(re.search(r"correctors = (\d+)", step).group(1)), "NOT CONVERGED" not in step, wall
-
-
-def patch3d_bench():
-    print("\ncontactPatchTest3D: outer correctors, contact against the same mesh without contact")
-    print("%-18s %18s %18s %18s %8s %8s" % ("variant", "no contact", "lagrangeMultiplier", "penalty",
-                                             "LM/free", "pen/free"))
-    for variant in ("", "-rotate", "-nu 0.3", "-rotate -nu 0.3"):
-        free = patch3d_case("-noContact " + variant)
-        lm = patch3d_case("-method lagrangeMultiplier " + variant)
-        pen = patch3d_case("-method penalty " + variant)
-
-        def cell(r):
-            return "%6d%s (%5.1f s)" % (r[0], "" if r[1] else "*", r[2])
-        print("%-18s %18s %18s %18s %8.2f %8.2f" % (variant or "(axis-aligned)", cell(free), cell(lm), cell(pen),
-                                                   lm[0] / free[0], pen[0] / free[0]))
-    print("(* not converged at the 5000 cap; nu = 0 axis-aligned without contact converges in 2: the"
-          " lateral components stay at round-off)")
-
-
-def main():
-    os.makedirs(WORK, exist_ok=True)
-    patch3d_bench()
-    hertz_bench()
-    print("plateHole refinement (Kirsch), serial")
-    print("%8s %8s %12s %12s %8s %10s %10s" % ("nRadial", "cells", "err@hole/3T", "L2/T", "order", "correctors", "wall [s]"))
+def plate_bench():
+    print("\nplateHole refinement (Kirsch), serial")
+    print("%8s %8s %12s %12s %8s %10s %10s" % ("nRadial", "cells", "err@hole/3T", "L2/T", "order",
+                                               "correctors", "wall [s]"))
     rows = [plate_case(n) for n in (15, 30, 60, 120)]
     prev = None
     for r in rows:
         order = "" if prev is None else "%.2f" % (np.log(prev["e_hole"] / r["e_hole"]) / np.log(2))
-        print("%8d %8d %12.4g %12.4g %8s %10d %10.2f" % (r["n"], r["cells"], r["e_hole"], r["e_l2"], order, r["ncorr"], r["wall"]))
+        print("%8d %8d %12.4g %12.4g %8s %10d %10.2f" % (r["n"], r["cells"], r["e_hole"], r["e_l2"], order,
+                                                         r["ncorr"], r["wall"]))
         prev = r
     par = plate_case(rows[-1]["n"], parallel=True)
     print("\nfinest mesh, 2 MPI ranks: wall %.2f s, correctors %d; serial/parallel wall ratio %.2f"
           % (par["wall"], par["ncorr"], rows[-1]["wall"] / par["wall"]))
     print("(times include solver start-up; %d cores on this machine)" % os.cpu_count())
+
+
+def main():
+    t0 = time.time()
+    os.makedirs(WORK, exist_ok=True)
+    rows, runs = convergence_rows()
+    convergence_table(rows, runs)
+    hertz_bench(runs)
+    plate_bench()
+    print("\n(bench: %.0f s)" % (time.time() - t0))
 
 
 if __name__ == "__main__":

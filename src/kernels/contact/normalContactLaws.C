@@ -28,22 +28,6 @@ double stiffnessScaledPenalty(const double scale, const double K, const double h
 }
 
 
-double robinValueFraction(const double epsN, const double K, const double delta)
-{
-    // Written as 1/(1 + (K/delta)/eps) so that eps -> inf gives exactly 1
-    // (Dirichlet) and eps = 0 exactly 0 (free), without inf/inf
-    if (epsN <= 0)
-    {
-        return 0.0;
-    }
-    if (std::isinf(epsN))
-    {
-        return 1.0;
-    }
-    return 1.0/(1.0 + (K/delta)/epsN);
-}
-
-
 bool validPenalty(const double value)
 {
     return value > 0 && std::isfinite(value);

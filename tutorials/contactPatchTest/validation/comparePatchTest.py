@@ -35,7 +35,6 @@ Both: the total normal force on the slave patch, sum_f p_f |Sf_f|, against
 tolerance as the stress; and, when the contactReport function object wrote
 postProcessing/contactReport/*/lowerTop.dat, its last normalForce likewise.
 """
-import json
 import os
 import sys
 
@@ -46,7 +45,7 @@ for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../sr
     if os.path.isdir(os.path.join(_p, "c4fpost")):
         sys.path.insert(0, _p)
         break
-from c4fpost import foamio, hertz, report, contactreport  # noqa: E402
+from c4fpost import foamio, hertz, patchtest, report  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -55,6 +54,8 @@ L = 1.0         # height of the two-block column [m], system/blockMeshDict
 SLAVE = "lowerTop"
 MASTER = "upperBottom"
 EXACT_TOL = 1e-6
+OFFSET_TOL = 1e-3   # fraction of the penalty offset
+TEST = patchtest.PatchTest("contactPatchTest", SLAVE, MASTER, DELTA, L, EXACT_TOL, OFFSET_TOL)
 
 
 def compare(case):
@@ -64,64 +65,19 @@ def compare(case):
     K = hertz.impK(E, nu, planeStress)
     exact = -Eu * DELTA / L
 
-    D0 = os.path.join(case, "0", "D")
-    method = hertz.read_entry(D0, "method")
+    method = hertz.read_entry(os.path.join(case, "0", "D"), "method")
     C, V = hertz.cell_centres_volumes(case)
-    Cf, Sf = hertz.patch_geometry(case, SLAVE)
-    area = np.linalg.norm(Sf, axis=1)
-    slaveCells = foamio.patch_face_cells(case, SLAVE)
-    h = V[slaveCells] / area
-
-    sigma = foamio.read_internal(os.path.join(case, time, "sigma"), V.size)
-    syy = sigma[:, 3]
-    rel = np.abs(syy - exact) / abs(exact)
-    maxRel = float(rel.max())
-    spread = float((syy.max() - syy.min()) / abs(exact))
+    Cf, area, _, h = TEST.slave_geometry(case, V)
+    syy = patchtest.stress_tensor(case, time, V.size)[:, 1, 1]
+    maxRel, spread = patchtest.uniformity(syy, exact)
 
     res = dict(time=time, method=method, E=E, nu=nu, K=K, exact=exact, maxRel=maxRel,
                spread=spread, h=h.tolist())
-    if method == "penalty":
-        s = hertz.read_entry(D0, "penaltyScale")
-        eps = s * K / h
-        if np.ptp(eps) > 1e-12 * eps.max():
-            print("NOTE: the slave cells' h = V/A varies (%g .. %g); using the mean"
-                  % (h.min(), h.max()))
-        eps = float(eps.mean())
-        predicted = -Eu * DELTA / (L + Eu / eps)
-        offset = 1.0 - L / (L + Eu / eps)
-        tol = 1e-3 * offset
-        res.update(penaltyScale=s, eps=eps, predicted=predicted, offset=offset)
-        checks = [
-            dict(name="contactPatchTest/syy_penalty_offset", value=maxRel, reference=offset,
-                 error=abs(maxRel - offset), tolerance=tol, units="fraction of |sigma_exact|"),
-            dict(name="contactPatchTest/syy_uniformity", value=spread, reference=0.0,
-                 error=spread, tolerance=EXACT_TOL, units="fraction of |sigma_exact|"),
-        ]
-        forceTol = tol
-    else:
-        predicted = exact
-        res.update(predicted=predicted, offset=0.0)
-        checks = [
-            dict(name="contactPatchTest/syy_max_rel_error", value=maxRel, reference=0.0,
-                 error=maxRel, tolerance=EXACT_TOL, units="fraction of |sigma_exact|"),
-        ]
-        forceTol = EXACT_TOL
-
+    checks, predicted, forceTol = TEST.stress_checks(case, res, "syy", method == "penalty",
+                                                     Eu, K, h)
     # Contact force on the slave patch
-    p = foamio.read_patch(os.path.join(case, time, "contactPressure"), SLAVE, area.size)
-    F = float(np.sum(p * area))
-    Fref = abs(predicted) * float(area.sum())
-    checks.append(dict(name="contactPatchTest/contact_force", value=F, reference=Fref,
-                       error=abs(F - Fref) / Fref, tolerance=forceTol, units="N"))
-    rep = contactreport.last_row(case, SLAVE)
-    if rep and "normalForce" in rep:
-        Fr = rep["normalForce"]
-        checks.append(dict(name="contactPatchTest/contactReport_normalForce", value=Fr,
-                           reference=Fref, error=abs(Fr - Fref) / Fref, tolerance=forceTol,
-                           units="N"))
-    res["report"] = rep
-    for c in checks:
-        c["passed"] = bool(c["error"] <= c["tolerance"])
+    checks += TEST.force_checks(case, time, res, area, predicted, forceTol)
+    patchtest.set_passed(checks)
 
     # Data for the table and the plot: the column of cells nearest x = 0.5 in
     # each block, and the interface pressures
@@ -135,11 +91,9 @@ def compare(case):
         cols.extend(col[np.argsort(C[col, 1])].tolist())
     cols = np.array(cols)
     res.update(colX=C[cols, 0].tolist(), colY=C[cols, 1].tolist(), colSyy=syy[cols].tolist(),
-               slaveX=Cf[:, 0].tolist(), slaveP=p.tolist(), F=F, Fref=Fref)
+               slaveX=Cf[:, 0].tolist())
     try:
-        CfM, SfM = hertz.patch_geometry(case, MASTER)
-        pM = foamio.read_patch(os.path.join(case, time, "contactPressure"), MASTER, len(CfM))
-        res.update(masterX=CfM[:, 0].tolist(), masterP=pM.tolist())
+        TEST.master_pressure(case, time, res)
     except (KeyError, ValueError, AttributeError):
         pass
     res["checks"] = checks
@@ -147,39 +101,24 @@ def compare(case):
 
 
 def plot(res, png):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = patchtest.pyplot()
     ex = abs(res["exact"])
-    pred = abs(res["predicted"])
+    penalty = res["method"] == "penalty"
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
-    y = np.array(res["colY"])
-    a1.plot(np.array(res["colSyy"]) / ex, y, "o", label="cells nearest x = 0.5")
-    a1.axvline(-1.0, color="k", lw=1, label="exact (gap closed)")
-    if res["method"] == "penalty":
-        a1.axvline(-pred / ex, color="C3", ls="--", lw=1, label="penalty prediction")
-    a1.axhline(0.5, color="0.6", ls=":", lw=1)
-    a1.set_xlabel(r"$\sigma_{yy}$ / |E $\Delta$/L|")
-    a1.set_ylabel("y [m]")
-    a1.set_title("stress along the vertical centre line")
-    a1.legend(fontsize=8)
-    a1.grid(alpha=0.3)
+    patchtest.plot_centre_line(a1, res, penalty, res["colSyy"], res["colY"],
+                               "cells nearest x = 0.5", 0.5,
+                               r"$\sigma_{yy}$ / |E $\Delta$/L|", "y [m]")
     a2.plot(res["slaveX"], np.array(res["slaveP"]) / ex, "o", label="lowerTop (slave, 10 faces)")
     if "masterX" in res:
         a2.plot(res["masterX"], np.array(res["masterP"]) / ex, "s", mfc="none",
                 label="upperBottom (master, 7 faces)")
-    a2.axhline(1.0, color="k", lw=1, label="exact")
-    if res["method"] == "penalty":
-        a2.axhline(pred / ex, color="C3", ls="--", lw=1, label="penalty prediction")
+    patchtest.mark_pressure(a2, res, penalty)
     a2.set_xlabel("x [m]")
     a2.set_ylabel("contact pressure / |E $\\Delta$/L|")
     a2.set_title("interface pressure (%s)" % res["method"])
     a2.legend(fontsize=8)
     a2.grid(alpha=0.3)
-    for ax in (a1, a2):
-        ax.ticklabel_format(useOffset=False)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    patchtest.save(fig, (a1, a2), png)
 
 
 def main():
@@ -187,17 +126,9 @@ def main():
     res = compare(args.case)
     print("contactPatchTest: sigma_yy over all cells (time %s, method %s)"
           % (res["time"], res["method"]))
-    print("  E = %g Pa, nu = %g, K = 2mu + lambda = %g Pa; exact sigma_yy = %g Pa"
-          % (res["E"], res["nu"], res["K"], res["exact"]))
-    if res["method"] == "penalty":
-        print("  penalty: scale %g, h = V/A = %g m, eps_N = %g Pa/m -> sigma = %.9g Pa,"
-              " offset %.6g" % (res["penaltyScale"], np.mean(res["h"]), res["eps"],
-                                res["predicted"], res["offset"]))
-    print("  max |sigma_yy - exact|/|exact| = %.4g, (max - min)/|exact| = %.4g"
-          % (res["maxRel"], res["spread"]))
-    print("  contact force on %s: %.9g N (expected %.9g N)" % (SLAVE, res["F"], res["Fref"]))
-    if res["report"] is None:
-        print("  (no postProcessing/contactReport/*/%s.dat)" % SLAVE)
+    patchtest.print_constants(res, "sigma_yy")
+    patchtest.print_stress(res, "sigma_yy", res["method"] == "penalty")
+    TEST.print_force(res)
     print("%8s %8s %16s" % ("x", "y", "sigma_yy [Pa]"))
     for x, y, s in zip(res["colX"], res["colY"], res["colSyy"]):
         print("%8.4f %8.4f %16.9g" % (x, y, s))

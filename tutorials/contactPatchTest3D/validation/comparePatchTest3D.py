@@ -84,7 +84,7 @@ for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../sr
     if os.path.isdir(os.path.join(_p, "c4fpost")):
         sys.path.insert(0, _p)
         break
-from c4fpost import foamio, hertz, report, contactreport  # noqa: E402
+from c4fpost import foamio, hertz, patchtest, report  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -96,9 +96,9 @@ MASTER = "lowerTop"
 TOP = "upperTop"           # outward normal R e_z
 SYMMETRY_X = "symmetryX"   # outward normal -R e_x
 EXACT_TOL = 1e-6
+OFFSET_TOL = 1e-3   # fraction of the penalty offset
 LOAD_TOL = 1e-8
-# symmTensor order in OpenFOAM files: xx xy xz yy yz zz
-_SYMM = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
+TEST = patchtest.PatchTest(NAME, SLAVE, MASTER, DELTA, L, EXACT_TOL, OFFSET_TOL)
 OTHERS = {"xx": (0, 0), "yy": (1, 1), "xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 
 
@@ -209,22 +209,13 @@ def compare(case):
     R = rotation_from_mesh(case)
     C, V = hertz.cell_centres_volumes(case)
     Cr = C @ R                          # x' = R^T x, row by row
-    Cf, Sf = hertz.patch_geometry(case, SLAVE)
-    Cfr = Cf @ R
-    area = np.linalg.norm(Sf, axis=1)
-    slaveCells = foamio.patch_face_cells(case, SLAVE)
+    Cf, area, slaveCells, h = TEST.slave_geometry(case, V)
     masterCells = foamio.patch_face_cells(case, MASTER)
-    h = V[slaveCells] / area
 
-    s6 = foamio.read_internal(os.path.join(case, time, "sigma"), V.size)
-    S = np.empty((V.size, 3, 3))
-    for k, (i, j) in enumerate(_SYMM):
-        S[:, i, j] = S[:, j, i] = s6[:, k]
+    S = patchtest.stress_tensor(case, time, V.size)
     Sr = np.einsum("ki,nkl,lj->nij", R, S, R)     # R^T sigma R
     szz = Sr[:, 2, 2]
-    rel = np.abs(szz - exact) / abs(exact)
-    maxRel = float(rel.max())
-    spread = float((szz.max() - szz.min()) / abs(exact))
+    maxRel, spread = patchtest.uniformity(szz, exact)
     others = {k: float(np.abs(Sr[:, i, j]).max() / abs(exact)) for k, (i, j) in OTHERS.items()}
     worst = max(others, key=others.get)
 
@@ -239,59 +230,24 @@ def compare(case):
     checks = [dict(name=NAME + "/load_direction", value=float(np.linalg.norm(d)),
                    reference=DELTA, error=loadErr, tolerance=LOAD_TOL,
                    units="m (error: |D_top - R (0 0 -Delta)|/Delta)")]
-    if contact and method == "penalty":
-        s = hertz.read_entry(os.path.join(case, "0", "D"), "penaltyScale")
-        eps = s * K / h
-        if np.ptp(eps) > 1e-12 * eps.max():
-            print("NOTE: the slave cells' h = V/A varies (%g .. %g); using the mean"
-                  % (h.min(), h.max()))
-        eps = float(eps.mean())
-        predicted = -E * DELTA / (L + E / eps)
-        offset = 1.0 - L / (L + E / eps)
-        tol = 1e-3 * offset
-        res.update(penaltyScale=s, eps=eps, predicted=predicted, offset=offset)
-        checks += [
-            dict(name=NAME + "/szz_penalty_offset", value=maxRel, reference=offset,
-                 error=abs(maxRel - offset), tolerance=tol, units="fraction of |sigma_exact|"),
-            dict(name=NAME + "/szz_uniformity", value=spread, reference=0.0,
-                 error=spread, tolerance=EXACT_TOL, units="fraction of |sigma_exact|"),
-        ]
-        forceTol = tol
-    else:
-        predicted = exact
-        res.update(predicted=predicted, offset=0.0)
-        checks.append(dict(name=NAME + "/szz_max_rel_error", value=maxRel, reference=0.0,
-                           error=maxRel, tolerance=EXACT_TOL, units="fraction of |sigma_exact|"))
-        forceTol = EXACT_TOL
+    stress, predicted, forceTol = TEST.stress_checks(case, res, "szz",
+                                                     contact and method == "penalty", E, K, h)
+    checks += stress
     checks.append(dict(name=NAME + "/other_components", value=others[worst], reference=0.0,
                        error=others[worst], tolerance=EXACT_TOL,
                        units="max |sigma'_%s|/|sigma_exact|" % worst))
 
     # Contact force on the slave patch
-    pPath = os.path.join(case, time, "contactPressure")
     res["report"] = None
     if contact:
-        p = foamio.read_patch(pPath, SLAVE, area.size)
-        F = float(np.sum(p * area))
-        Fref = abs(predicted) * float(area.sum())
-        checks.append(dict(name=NAME + "/contact_force", value=F, reference=Fref,
-                           error=abs(F - Fref) / Fref, tolerance=forceTol, units="N"))
-        rep = contactreport.last_row(case, SLAVE)
-        if rep and "normalForce" in rep:
-            Fr = rep["normalForce"]
-            checks.append(dict(name=NAME + "/contactReport_normalForce", value=Fr,
-                               reference=Fref, error=abs(Fr - Fref) / Fref,
-                               tolerance=forceTol, units="N"))
-        res.update(report=rep, F=F, Fref=Fref, slaveX=Cfr[:, 0].tolist(), slaveP=p.tolist())
-        CfM, _ = hertz.patch_geometry(case, MASTER)
-        pM = foamio.read_patch(pPath, MASTER, len(CfM))
-        res.update(masterX=(CfM @ R)[:, 0].tolist(), masterP=pM.tolist())
+        checks += TEST.force_checks(case, time, res, area, predicted, forceTol)
+        res["slaveX"] = (Cf @ R)[:, 0].tolist()
+        TEST.master_pressure(case, time, res, R)
 
     conv, step, ncorr = convergence_check(case)
     checks.append(conv)
     res.update(step=step, nCorrectors=ncorr)
-    for c in checks:
-        c.setdefault("passed", bool(c["error"] <= c["tolerance"]))
+    patchtest.set_passed(checks)
 
     # Data for the table and the plot: the column of cells nearest
     # x' = y' = 0.5 in each box, and the cells on either side of the
@@ -313,25 +269,15 @@ def compare(case):
 
 
 def plot(res, png):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = patchtest.pyplot()
     ex = abs(res["exact"])
-    pred = abs(res["predicted"])
     penalty = res["contact"] and res["method"] == "penalty"
     what = "%s%s, nu = %g" % (res["method"] if res["contact"] else "no contact",
                                ", rotated" if res["rotated"] else "", res["nu"])
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
-    a1.plot(np.array(res["colSzz"]) / ex, res["colZ"], "o", label="cells nearest x' = y' = 0.5")
-    a1.axvline(-1.0, color="k", lw=1, label="exact (gap closed)")
-    if penalty:
-        a1.axvline(-pred / ex, color="C3", ls="--", lw=1, label="penalty prediction")
-    a1.axhline(0.0, color="0.6", ls=":", lw=1)
-    a1.set_xlabel(r"$\sigma'_{zz}$ / |E $\Delta$/L|")
-    a1.set_ylabel("z' [m]")
-    a1.set_title("stress along the vertical centre line")
-    a1.legend(fontsize=8)
-    a1.grid(alpha=0.3)
+    patchtest.plot_centre_line(a1, res, penalty, res["colSzz"], res["colZ"],
+                               "cells nearest x' = y' = 0.5", 0.0,
+                               r"$\sigma'_{zz}$ / |E $\Delta$/L|", "z' [m]")
     a2.plot(res["slaveCellX"], np.array(res["slaveCellSzz"]) / -ex, "o", ms=4,
             label=r"$-\sigma'_{zz}$, upper cells on %s (slave, 10 x 8)" % SLAVE)
     a2.plot(res["masterCellX"], np.array(res["masterCellSzz"]) / -ex, "s", ms=7, mfc="none",
@@ -341,9 +287,7 @@ def plot(res, png):
                 label="contact pressure, %s faces" % SLAVE)
         a2.plot(res["masterX"], np.array(res["masterP"]) / ex, "+", ms=9,
                 label="contact pressure, %s faces" % MASTER)
-    a2.axhline(1.0, color="k", lw=1, label="exact")
-    if penalty:
-        a2.axhline(pred / ex, color="C3", ls="--", lw=1, label="penalty prediction")
+    patchtest.mark_pressure(a2, res, penalty)
     a2.set_xlabel("x' [m] (all y')")
     a2.set_ylabel("/ |E $\\Delta$/L|")
     a2.set_title("at the interface (%s)" % what)
@@ -357,10 +301,7 @@ def plot(res, png):
     a2.set_ylim(min(lo, 0.97), max(hi, 1.03))
     a1.text(0.03, 0.03, "max |error| %.2g, spread %.2g\n(fractions of |E $\\Delta$/L|)"
             % (res["maxRel"], res["spread"]), transform=a1.transAxes, fontsize=8)
-    for ax in (a1, a2):
-        ax.ticklabel_format(useOffset=False)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    patchtest.save(fig, (a1, a2), png)
 
 
 def main():
@@ -378,24 +319,16 @@ def main():
     print("%s: sigma' = R^T sigma R over all cells (time %s, %s)"
           % (NAME, res["time"], ("method " + res["method"]) if res["contact"]
              else "no contact: exact state on both contact patches"))
-    print("  E = %g Pa, nu = %g, K = 2mu + lambda = %g Pa; exact sigma'_zz = %g Pa"
-          % (res["E"], res["nu"], res["K"], res["exact"]))
+    patchtest.print_constants(res, "sigma'_zz")
     print("  R (from the mesh%s):" % ("" if res["rotated"] else ", not rotated"))
     for row in res["R"]:
         # no "-0.0000000000" for round-off
         print("    %14.10f %14.10f %14.10f" % tuple(v if abs(v) > 5e-11 else 0.0 for v in row))
     print("  top displacement (0/D): (%.10g %.10g %.10g)" % tuple(res["topDisplacement"]))
-    if res["contact"] and res["method"] == "penalty":
-        print("  penalty: scale %g, h = V/A = %g m, eps_N = %g Pa/m -> sigma = %.9g Pa,"
-              " offset %.6g" % (res["penaltyScale"], np.mean(res["h"]), res["eps"],
-                                res["predicted"], res["offset"]))
-    print("  max |sigma'_zz - exact|/|exact| = %.4g, (max - min)/|exact| = %.4g"
-          % (res["maxRel"], res["spread"]))
+    patchtest.print_stress(res, "sigma'_zz", res["contact"] and res["method"] == "penalty")
     print("  max |sigma'_ij|/|exact|: " + ", ".join("%s %.3g" % kv for kv in res["others"].items()))
     if res["contact"]:
-        print("  contact force on %s: %.9g N (expected %.9g N)" % (SLAVE, res["F"], res["Fref"]))
-        if res["report"] is None:
-            print("  (no postProcessing/contactReport/*/%s.dat)" % SLAVE)
+        TEST.print_force(res)
     if step:
         print("  solver: time %s, %d correctors (nCorrectors %d), residual %.3g%s"
               % (step["time"], step["correctors"], res["nCorrectors"], step["residual"],

@@ -34,23 +34,6 @@ TEST(penaltyLaw, stiffnessScaledDefault)
     EXPECT_NEAR(stiffnessScaledPenalty(5.0, 2.69e11, 1e-3), 1.345e15, 1e3);
 }
 
-TEST(penaltyLaw, robinFractionReproducesSeriesSprings)
-{
-    // Face between a cell (conductance K/delta) and a target (eps): the
-    // face value D_f = f Dt + (1 - f) Dc must balance the two fluxes
-    const double K = 2e11, delta = 5e-3, eps = 7e13, Dc = 1e-4, Dt = -3e-5;
-    const double f = robinValueFraction(eps, K, delta);
-    const double Df = f*Dt + (1 - f)*Dc;
-    EXPECT_NEAR(K*(Df - Dc)/delta, eps*(Dt - Df), 1e-9*eps*std::abs(Dt - Dc));
-    EXPECT_DOUBLE_EQ(robinValueFraction(K/delta, K, delta), 0.5);
-    EXPECT_DOUBLE_EQ(robinValueFraction(0.0, K, delta), 0.0);
-    EXPECT_DOUBLE_EQ
-    (
-        robinValueFraction(std::numeric_limits<double>::infinity(), K, delta),
-        1.0
-    );
-}
-
 TEST(penaltyLaw, validation)
 {
     EXPECT_TRUE(validPenalty(1.0));

@@ -9,11 +9,17 @@
 // parallel form against the serial one with a simulated all-reduce:
 // threads that meet in the reduction, with a timeout that turns a hang
 // into a failure.
+//
+// Shared setup lives in helpers rather than a ::testing::Test fixture: a
+// fixture must carry the suite's name, AndersonAcceleration, which would
+// hide the class under test inside every test body, and renaming the
+// suite would change the test names that filters and logs rely on.
 
 #include "andersonAcceleration.H"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -80,12 +86,96 @@ Mat symmetricWithSpectrum(const Vec& lambda, std::mt19937& gen)
     return Q*lambda.asDiagonal()*Q.transpose();
 }
 
+// One mode with factor -1.2, the others in [-spread, spread]; symmetric,
+// so that the spectrum is exactly the one asked for
+Mat withDivergingMode(const int n, const double spread, std::mt19937& gen)
+{
+    Vec lambda(n);
+    lambda(0) = -1.2;
+    for (int i = 1; i < n; ++i)
+    {
+        lambda(i) = spread*uniform(gen);
+    }
+    return symmetricWithSpectrum(lambda, gen);
+}
+
 using MapFn = std::function<Vec(const Vec&)>;
+
+// x = cos x has the single real root 0.739085133215160641...
+const double dottie = 0.7390851332151607;
+
+Vec cosine(const Vec& x)
+{
+    return x.array().cos().matrix();
+}
 
 // G(x) = xStar + A (x - xStar): the fixed point is xStar to round-off
 MapFn linearMap(const Mat& A, const Vec& xStar)
 {
     return [A, xStar](const Vec& x) -> Vec { return xStar + A*(x - xStar); };
+}
+
+// A linear map with its fixed point and a start, drawn in this order from
+// one seed so that each test's numbers stay reproducible; gen stays with
+// it for tests that draw more
+struct LinearProblem
+{
+    LinearProblem
+    (
+        const unsigned seed,
+        const std::function<Mat(std::mt19937&)>& makeA
+    )
+    :
+        gen(seed),
+        A(makeA(gen)),
+        xStar(randomVector(A.rows(), gen)),
+        x0(randomVector(A.rows(), gen)),
+        G(linearMap(A, xStar))
+    {}
+
+    // A random contraction, the common case
+    LinearProblem(const int n, const unsigned seed, const double rho)
+    :
+        LinearProblem
+        (
+            seed,
+            [n, rho](std::mt19937& g) { return randomContraction(n, rho, g); }
+        )
+    {}
+
+    std::mt19937 gen;
+    Mat A;
+    Vec xStar;
+    Vec x0;
+    MapFn G;
+};
+
+AndersonAcceleration::Parameters params(const int depth, const double beta)
+{
+    AndersonAcceleration::Parameters p;
+    p.depth = depth;
+    p.beta = beta;
+    return p;
+}
+
+// One update into a separate output, so that aliasing is tested only where
+// a test asks for it
+Vec step(AndersonAcceleration& aa, const Vec& x, const Vec& g)
+{
+    Vec xNext(x.size());
+    aa.update(x.data(), g.data(), xNext.data(), x.size());
+    return xNext;
+}
+
+// A fixed number of updates without a convergence check, to build up a
+// history before the event a test is about
+Vec iterate(AndersonAcceleration& aa, const MapFn& G, Vec x, const int nSteps)
+{
+    for (int k = 0; k < nSteps; ++k)
+    {
+        x = step(aa, x, G(x));
+    }
+    return x;
 }
 
 struct Outcome
@@ -123,12 +213,24 @@ Outcome accelerate
         {
             return {k, e, true};
         }
-        const Vec g = G(x);
-        Vec xNext(x.size());
-        aa.update(x.data(), g.data(), xNext.data(), x.size());
-        x = xNext;
+        x = step(aa, x, G(x));
     }
     return {-1, relError(x, xStar), x.allFinite()};
+}
+
+// The same from a fresh accelerator, for tests that look only at the count
+Outcome accelerate
+(
+    const AndersonAcceleration::Parameters& p,
+    const MapFn& G,
+    const Vec& x0,
+    const Vec& xStar,
+    const double tol,
+    const int maxIt
+)
+{
+    AndersonAcceleration aa(p);
+    return accelerate(aa, G, x0, xStar, tol, maxIt);
 }
 
 // Plain iteration x <- G(x), same counting
@@ -144,14 +246,6 @@ Outcome plain(const MapFn& G, Vec x, const Vec& xStar, const double tol, const i
         x = G(x);
     }
     return {-1, relError(x, xStar), x.allFinite()};
-}
-
-AndersonAcceleration::Parameters params(const int depth, const double beta)
-{
-    AndersonAcceleration::Parameters p;
-    p.depth = depth;
-    p.beta = beta;
-    return p;
 }
 
 
@@ -271,10 +365,7 @@ ParallelOutcome parallelDifference
     int maxColumns = 0;
     for (int k = 0; k < nIter; ++k)
     {
-        const Vec gs = G(xs, k);
-        Vec xsNext(n);
-        serial.update(xs.data(), gs.data(), xsNext.data(), n);
-        xs = xsNext;
+        xs = step(serial, xs, G(xs, k));
 
         const Vec gp = G(xp, k);
         Vec xpNext(n);
@@ -356,15 +447,11 @@ ParallelOutcome parallelDifference
 TEST(AndersonAcceleration, LinearContractionFullDepthConvergesInAboutNPlusOneSteps)
 {
     const int n = 20;
-    std::mt19937 gen(20240611);
-    const Mat A = randomContraction(n, 0.95, gen);
-    const Vec xStar = randomVector(n, gen);
-    const Vec x0 = randomVector(n, gen);
+    const LinearProblem lp(n, 20240611, 0.95);
 
     for (const int depth : {n, n + 10})
     {
-        AndersonAcceleration aa(params(depth, 1.0));
-        const Outcome run = accelerate(aa, linearMap(A, xStar), x0, xStar, 1e-10, 200);
+        const Outcome run = accelerate(params(depth, 1.0), lp.G, lp.x0, lp.xStar, 1e-10, 200);
         ASSERT_TRUE(run.finite);
         ASSERT_GE(run.iterations, 0) << "did not converge, error " << run.error;
         std::cout << "[ depth " << depth << " ] " << run.iterations
@@ -376,20 +463,15 @@ TEST(AndersonAcceleration, LinearContractionFullDepthConvergesInAboutNPlusOneSte
 
 TEST(AndersonAcceleration, LinearContractionDepthFiveBeatsPlainIteration)
 {
-    const int n = 20;
-    std::mt19937 gen(20240611);
-    const Mat A = randomContraction(n, 0.95, gen);
-    const Vec xStar = randomVector(n, gen);
-    const Vec x0 = randomVector(n, gen);
-    const MapFn G = linearMap(A, xStar);
+    const LinearProblem lp(20, 20240611, 0.95);
 
-    const Outcome p = plain(G, x0, xStar, 1e-10, 20000);
+    const Outcome p = plain(lp.G, lp.x0, lp.xStar, 1e-10, 20000);
     ASSERT_GT(p.iterations, 0) << "plain iteration did not converge";
 
     for (const double beta : {1.0, 0.5})
     {
         AndersonAcceleration aa(params(5, beta));
-        const Outcome a = accelerate(aa, G, x0, xStar, 1e-10, 20000);
+        const Outcome a = accelerate(aa, lp.G, lp.x0, lp.xStar, 1e-10, 20000);
         ASSERT_GT(a.iterations, 0) << "beta " << beta << ": error " << a.error;
         const double ratio = double(p.iterations)/a.iterations;
         std::cout << "[ beta " << beta << " ] plain " << p.iterations
@@ -405,31 +487,23 @@ TEST(AndersonAcceleration, LinearContractionDepthFiveBeatsPlainIteration)
 // Anderson converges because I - A is non-singular
 TEST(AndersonAcceleration, DivergingOscillatingModeConverges)
 {
-    const int n = 20;
-    std::mt19937 gen(7);
-    Vec lambda(n);
-    lambda(0) = -1.2;
-    for (int i = 1; i < n; ++i)
-    {
-        lambda(i) = 0.9*uniform(gen);
-    }
-    const Mat A = symmetricWithSpectrum(lambda, gen);
-    const Vec xStar = randomVector(n, gen);
-    const Vec x0 = randomVector(n, gen);
-    const MapFn G = linearMap(A, xStar);
+    const LinearProblem lp
+    (
+        7,
+        [](std::mt19937& gen) { return withDivergingMode(20, 0.9, gen); }
+    );
 
     // The plain iteration really diverges here
-    Vec x = x0;
+    Vec x = lp.x0;
     for (int k = 0; k < 60; ++k)
     {
-        x = G(x);
+        x = lp.G(x);
     }
-    EXPECT_GT(relError(x, xStar), 1e3*relError(x0, xStar));
+    EXPECT_GT(relError(x, lp.xStar), 1e3*relError(lp.x0, lp.xStar));
 
     for (const int depth : {2, 5})
     {
-        AndersonAcceleration aa(params(depth, 1.0));
-        const Outcome a = accelerate(aa, G, x0, xStar, 1e-10, 300);
+        const Outcome a = accelerate(params(depth, 1.0), lp.G, lp.x0, lp.xStar, 1e-10, 300);
         EXPECT_TRUE(a.finite);
         EXPECT_GT(a.iterations, 0) << "depth " << depth << ": error " << a.error;
         std::cout << "[ depth " << depth << " ] " << a.iterations << " iterations\n";
@@ -443,23 +517,19 @@ TEST(AndersonAcceleration, StepMatchesDirectLeastSquares)
 {
     const int n = 12, depth = 3;
     const double beta = 0.5;
-    std::mt19937 gen(3);
-    const Mat A = randomContraction(n, 0.8, gen);
-    const Vec xStar = randomVector(n, gen);
-    const MapFn G = linearMap(A, xStar);
+    const LinearProblem lp(n, 3, 0.8);
 
     AndersonAcceleration aa(params(depth, beta));
     std::vector<Vec> xs, rs;
-    Vec x = randomVector(n, gen);
+    Vec x = lp.x0;
     for (int k = 0; k < 8; ++k)
     {
-        const Vec g = G(x);
+        const Vec g = lp.G(x);
         const Vec r = g - x;
         xs.push_back(x);
         rs.push_back(r);
 
-        Vec xNext(n);
-        aa.update(x.data(), g.data(), xNext.data(), n);
+        const Vec xNext = step(aa, x, g);
 
         const int c = std::min<int>(depth, k);
         ASSERT_EQ(aa.nColumns(), c) << "iteration " << k;
@@ -493,17 +563,13 @@ TEST(AndersonAcceleration, StepMatchesDirectLeastSquares)
 
 TEST(AndersonAcceleration, CosineConvergesToDottieNumber)
 {
-    // x = cos x has the single real root 0.739085133215160641...
-    const double dottie = 0.7390851332151607;
     const int n = 10;
     std::mt19937 gen(11);
     const Vec x0 = randomVector(n, gen);
     const Vec xStar = Vec::Constant(n, dottie);
-    const MapFn G = [](const Vec& x) -> Vec { return x.array().cos().matrix(); };
 
-    const Outcome p = plain(G, x0, xStar, 1e-12, 1000);
-    AndersonAcceleration aa(params(3, 1.0));
-    const Outcome a = accelerate(aa, G, x0, xStar, 1e-12, 1000);
+    const Outcome p = plain(cosine, x0, xStar, 1e-12, 1000);
+    const Outcome a = accelerate(params(3, 1.0), cosine, x0, xStar, 1e-12, 1000);
     ASSERT_GT(p.iterations, 0);
     ASSERT_GT(a.iterations, 0) << "error " << a.error;
     std::cout << "plain " << p.iterations << ", Anderson(3) " << a.iterations << '\n';
@@ -516,13 +582,7 @@ TEST(AndersonAcceleration, NonlinearSystemWithDivergingModeConverges)
 {
     const int n = 15;
     std::mt19937 gen(5);
-    Vec lambda(n);
-    lambda(0) = -1.2;
-    for (int i = 1; i < n; ++i)
-    {
-        lambda(i) = 0.8*uniform(gen);
-    }
-    const Mat A = symmetricWithSpectrum(lambda, gen);
+    const Mat A = withDivergingMode(n, 0.8, gen);
     Mat B(n, n);
     for (int j = 0; j < n; ++j)
     {
@@ -539,8 +599,7 @@ TEST(AndersonAcceleration, NonlinearSystemWithDivergingModeConverges)
 
     for (const double beta : {1.0, 0.5})
     {
-        AndersonAcceleration aa(params(5, beta));
-        const Outcome a = accelerate(aa, G, x0, xStar, 1e-10, 300);
+        const Outcome a = accelerate(params(5, beta), G, x0, xStar, 1e-10, 300);
         EXPECT_TRUE(a.finite);
         EXPECT_GT(a.iterations, 0) << "beta " << beta << ": error " << a.error;
         std::cout << "[ beta " << beta << " ] " << a.iterations << " iterations\n";
@@ -552,13 +611,8 @@ TEST(AndersonAcceleration, NonlinearSystemWithDivergingModeConverges)
 
 TEST(AndersonAcceleration, SlicesGiveTheSerialIterates)
 {
-    const int n = 20;
-    std::mt19937 gen(20240611);
-    const Mat A = randomContraction(n, 0.95, gen);
-    const Vec xStar = randomVector(n, gen);
-    const Vec x0 = randomVector(n, gen);
-    const MapFn L = linearMap(A, xStar);
-    const auto G = [&L](const Vec& x, int) { return L(x); };
+    const LinearProblem lp(20, 20240611, 0.95);
+    const auto G = [&lp](const Vec& x, int) { return lp.G(x); };
 
     const std::vector<std::vector<int>> splits =
     {
@@ -569,7 +623,7 @@ TEST(AndersonAcceleration, SlicesGiveTheSerialIterates)
         for (const auto& split : splits)
         {
             const ParallelOutcome o =
-                parallelDifference(split, params(5, beta), G, x0, xStar, 40);
+                parallelDifference(split, params(5, beta), G, lp.x0, lp.xStar, 40);
             std::cout << "[ beta " << beta << ", " << split.size()
                       << " slices, first " << split[0] << " ] max difference "
                       << o.maxDiff << '\n';
@@ -619,25 +673,15 @@ TEST(AndersonAcceleration, ZeroResidualReturnsXUnchanged)
 
     // First call
     AndersonAcceleration aa(params(3, 0.5));
-    Vec xNext(n);
-    aa.update(x.data(), x.data(), xNext.data(), n);
-    EXPECT_TRUE(xNext == x);
+    EXPECT_TRUE(step(aa, x, x) == x);
     EXPECT_EQ(aa.residualNorm(), 0.0);
 
     // With a history: a few steps of a contraction, then a fixed point
     const Mat A = randomContraction(n, 0.5, gen);
-    const MapFn G = linearMap(A, x);
-    Vec y = randomVector(n, gen);
-    for (int k = 0; k < 4; ++k)
-    {
-        const Vec g = G(y);
-        aa.update(y.data(), g.data(), xNext.data(), n);
-        y = xNext;
-    }
+    iterate(aa, linearMap(A, x), randomVector(n, gen), 4);
     ASSERT_GT(aa.nColumns(), 0);
     const Vec z = randomVector(n, gen);
-    aa.update(z.data(), z.data(), xNext.data(), n);
-    EXPECT_TRUE(xNext == z);
+    EXPECT_TRUE(step(aa, z, z) == z);
     EXPECT_TRUE(aa.gamma().allFinite());
     EXPECT_EQ(aa.gamma().norm(), 0.0);
     EXPECT_EQ(aa.residualNorm(), 0.0);
@@ -654,8 +698,7 @@ TEST(AndersonAcceleration, RepeatedIteratesAreSkipped)
     AndersonAcceleration aa(params(3, beta));
     for (int k = 0; k < 6; ++k)
     {
-        Vec xNext(n);
-        aa.update(x.data(), g.data(), xNext.data(), n);
+        const Vec xNext = step(aa, x, g);
         ASSERT_TRUE(xNext.allFinite()) << "call " << k;
         // Nothing to extrapolate from: the plain relaxed step every time
         EXPECT_LT((xNext - (x + beta*(g - x))).norm(), 1e-15*x.norm());
@@ -667,20 +710,12 @@ TEST(AndersonAcceleration, RepeatedIteratesAreSkipped)
     const Mat A = randomContraction(n, 0.6, gen);
     const MapFn G = linearMap(A, x);
     aa.reset();
-    Vec y = g;
-    for (int k = 0; k < 3; ++k)
-    {
-        const Vec gy = G(y);
-        Vec xNext(n);
-        aa.update(y.data(), gy.data(), xNext.data(), n);
-        y = xNext;
-    }
+    const Vec y = iterate(aa, G, g, 3);
     const int columns = aa.nColumns();
     ASSERT_EQ(columns, 2);
-    Vec xNext(n);
     const Vec gy = G(y);
-    aa.update(y.data(), gy.data(), xNext.data(), n);
-    aa.update(y.data(), gy.data(), xNext.data(), n);
+    step(aa, y, gy);
+    const Vec xNext = step(aa, y, gy);
     EXPECT_TRUE(xNext.allFinite());
     EXPECT_TRUE(aa.gamma().allFinite());
     EXPECT_EQ(aa.nColumns(), columns + 1);
@@ -692,20 +727,16 @@ TEST(AndersonAcceleration, DependentColumnsAreDroppedNotInverted)
     // More columns than unknowns: the normal matrix must become singular
     // and the oldest columns go
     const int n = 3;
-    const Vec xStar = Vec::Constant(n, 0.7390851332151607);
-    const MapFn G = [](const Vec& x) -> Vec { return x.array().cos().matrix(); };
+    const Vec xStar = Vec::Constant(n, dottie);
 
     AndersonAcceleration aa(params(10, 1.0));
     Vec x = (Vec(n) << 0.1, -0.5, 1.0).finished();
     for (int k = 0; k < 30; ++k)
     {
-        const Vec g = G(x);
-        Vec xNext(n);
-        aa.update(x.data(), g.data(), xNext.data(), n);
-        ASSERT_TRUE(xNext.allFinite()) << "iteration " << k;
+        x = step(aa, x, cosine(x));
+        ASSERT_TRUE(x.allFinite()) << "iteration " << k;
         ASSERT_TRUE(aa.gamma().allFinite()) << "iteration " << k;
         EXPECT_LE(aa.nColumns(), n);
-        x = xNext;
     }
     EXPECT_GT(aa.nDropped() + aa.nSkipped(), 0);
     EXPECT_LT(relError(x, xStar), 1e-12);
@@ -716,11 +747,7 @@ TEST(AndersonAcceleration, DependentColumnsAreDroppedNotInverted)
 // thresholds are scale-invariant, so an absolute tolerance would show)
 TEST(AndersonAcceleration, DegenerateSweepStaysFiniteAndScaleInvariant)
 {
-    const int n = 20;
-    std::mt19937 gen(20240611);
-    const Mat A = randomContraction(n, 0.95, gen);
-    const Vec xs1 = randomVector(n, gen);
-    const Vec x01 = randomVector(n, gen);
+    const LinearProblem lp(20, 20240611, 0.95);
 
     int checked = 0;
     for (const int depth : {1, 2, 5})
@@ -730,13 +757,17 @@ TEST(AndersonAcceleration, DegenerateSweepStaysFiniteAndScaleInvariant)
             int reference = -2;
             for (const double scale : {1.0, 1e-12, 1e12})
             {
-                const Vec xStar = scale*xs1;
+                SCOPED_TRACE
+                (
+                    ::testing::Message() << "depth " << depth << " beta "
+                        << beta << " scale " << scale
+                );
+                const Vec xStar = scale*lp.xStar;
                 AndersonAcceleration aa(params(depth, beta));
-                const Outcome run = accelerate(aa, linearMap(A, xStar), scale*x01, xStar, 1e-10, 5000);
-                ASSERT_TRUE(run.finite)
-                    << "depth " << depth << " beta " << beta << " scale " << scale;
-                EXPECT_GT(run.iterations, 0)
-                    << "depth " << depth << " beta " << beta << " scale " << scale;
+                const Outcome run =
+                    accelerate(aa, linearMap(lp.A, xStar), scale*lp.x0, xStar, 1e-10, 5000);
+                ASSERT_TRUE(run.finite);
+                EXPECT_GT(run.iterations, 0);
                 EXPECT_TRUE(aa.gamma().allFinite());
                 EXPECT_TRUE(std::isfinite(aa.residualNorm()));
                 if (scale == 1.0)
@@ -745,8 +776,7 @@ TEST(AndersonAcceleration, DegenerateSweepStaysFiniteAndScaleInvariant)
                 }
                 else
                 {
-                    EXPECT_NEAR(run.iterations, reference, 1)
-                        << "depth " << depth << " beta " << beta << " scale " << scale;
+                    EXPECT_NEAR(run.iterations, reference, 1);
                 }
                 ++checked;
             }
@@ -771,34 +801,22 @@ TEST(AndersonAcceleration, EmptySliceInSerialIsHarmless)
 
 TEST(AndersonAcceleration, NonFiniteResidualRestartsCleanly)
 {
-    const int n = 8;
-    std::mt19937 gen(9);
-    const Mat A = randomContraction(n, 0.9, gen);
-    const Vec xStar = randomVector(n, gen);
-    const MapFn G = linearMap(A, xStar);
+    const LinearProblem lp(8, 9, 0.9);
 
     AndersonAcceleration aa(params(4, 1.0));
-    Vec x = randomVector(n, gen);
-    for (int k = 0; k < 4; ++k)
-    {
-        const Vec g = G(x);
-        Vec xNext(n);
-        aa.update(x.data(), g.data(), xNext.data(), n);
-        x = xNext;
-    }
+    const Vec x = iterate(aa, lp.G, lp.x0, 4);
     ASSERT_GT(aa.nColumns(), 0);
 
-    Vec bad = G(x);
+    Vec bad = lp.G(x);
     bad(3) = std::numeric_limits<double>::quiet_NaN();
-    Vec xNext(n);
-    aa.update(x.data(), bad.data(), xNext.data(), n);
+    step(aa, x, bad);
     EXPECT_FALSE(std::isfinite(aa.residualNorm()));
     EXPECT_EQ(aa.nColumns(), 0);
     EXPECT_EQ(aa.nRestarts(), 1);
 
     // The caller throws the bad iterate away and carries on from x: no
     // NaN may have been kept in the history
-    const Outcome run = accelerate(aa, G, x, xStar, 1e-10, 200);
+    const Outcome run = accelerate(aa, lp.G, x, lp.xStar, 1e-10, 200);
     EXPECT_TRUE(run.finite);
     EXPECT_GT(run.iterations, 0);
 }
@@ -806,22 +824,18 @@ TEST(AndersonAcceleration, NonFiniteResidualRestartsCleanly)
 TEST(AndersonAcceleration, InPlaceUpdateEqualsSeparateOutput)
 {
     const int n = 9;
-    std::mt19937 gen(4);
-    const Mat A = randomContraction(n, 0.9, gen);
-    const Vec xStar = randomVector(n, gen);
-    const MapFn G = linearMap(A, xStar);
+    const LinearProblem lp(n, 4, 0.9);
 
     AndersonAcceleration a(params(3, 0.5)), b(params(3, 0.5));
-    Vec x0 = randomVector(n, gen);
-    std::vector<double> xa(x0.data(), x0.data() + n), xb = xa;
+    std::vector<double> xa(lp.x0.data(), lp.x0.data() + n), xb = xa;
     for (int k = 0; k < 6; ++k)
     {
-        const Vec ga = G(Eigen::Map<Vec>(xa.data(), n));
+        const Vec ga = lp.G(Eigen::Map<Vec>(xa.data(), n));
         std::vector<double> gav(ga.data(), ga.data() + n), next;
         a.update(xa, gav, next);
         xa = next;
 
-        const Vec gb = G(Eigen::Map<Vec>(xb.data(), n));
+        const Vec gb = lp.G(Eigen::Map<Vec>(xb.data(), n));
         std::vector<double> gbv(gb.data(), gb.data() + n);
         b.update(xb, gbv, xb);     // into x itself
         ASSERT_EQ(xa, xb) << "iteration " << k;
@@ -839,38 +853,25 @@ TEST(AndersonAcceleration, InPlaceUpdateEqualsSeparateOutput)
 TEST(AndersonAcceleration, ResetAndSizeChangeStartAfresh)
 {
     const int n = 6;
-    std::mt19937 gen(6);
-    const Mat A = randomContraction(n, 0.9, gen);
-    const Vec xStar = randomVector(n, gen);
-    const MapFn G = linearMap(A, xStar);
+    LinearProblem lp(n, 6, 0.9);
 
     AndersonAcceleration aa(params(3, 1.0));
-    Vec x = randomVector(n, gen);
-    for (int k = 0; k < 4; ++k)
-    {
-        const Vec g = G(x);
-        Vec xNext(n);
-        aa.update(x.data(), g.data(), xNext.data(), n);
-        x = xNext;
-    }
+    const Vec x = iterate(aa, lp.G, lp.x0, 4);
     ASSERT_EQ(aa.nColumns(), 3);
 
     aa.reset();
     EXPECT_EQ(aa.nColumns(), 0);
     EXPECT_EQ(aa.gamma().size(), 0);
     {
-        const Vec g = G(x);
-        Vec xNext(n);
-        aa.update(x.data(), g.data(), xNext.data(), n);
-        EXPECT_TRUE(xNext == x + (g - x));
+        const Vec g = lp.G(x);
+        EXPECT_TRUE(step(aa, x, g) == x + (g - x));
         EXPECT_EQ(aa.nColumns(), 0);
     }
 
     // A different slice size (topology change) without reset: history
     // dropped, plain step, no out-of-range access
-    const Vec y = randomVector(n + 2, gen), gy = randomVector(n + 2, gen);
-    Vec yNext(n + 2);
-    aa.update(y.data(), gy.data(), yNext.data(), n + 2);
+    const Vec y = randomVector(n + 2, lp.gen), gy = randomVector(n + 2, lp.gen);
+    Vec yNext = step(aa, y, gy);
     EXPECT_EQ(aa.nColumns(), 0);
     EXPECT_EQ(aa.nRestarts(), 1);
     EXPECT_TRUE(yNext == y + (gy - y));
@@ -894,18 +895,10 @@ TEST(AndersonAcceleration, ResidualGrowthRestartsWhenAsked)
         p.restartGrowth = growth;
         AndersonAcceleration aa(p);
 
-        Vec x = randomVector(n, gen);
-        for (int k = 0; k < 6; ++k)
-        {
-            const Vec g = linearMap(A, x1)(x);
-            Vec xNext(n);
-            aa.update(x.data(), g.data(), xNext.data(), n);
-            x = xNext;
-        }
+        const Vec x = iterate(aa, linearMap(A, x1), randomVector(n, gen), 6);
         ASSERT_GT(aa.nColumns(), 0);
         const Vec g = linearMap(A, x2)(x);
-        Vec xNext(n);
-        aa.update(x.data(), g.data(), xNext.data(), n);
+        const Vec xNext = step(aa, x, g);
         if (std::isinf(growth))
         {
             EXPECT_EQ(aa.nRestarts(), 0);
@@ -925,12 +918,7 @@ TEST(AndersonAcceleration, ResidualGrowthRestartsWhenAsked)
 
 TEST(AndersonAcceleration, RegularisationDampsGamma)
 {
-    const int n = 10;
-    std::mt19937 gen(10);
-    const Mat A = randomContraction(n, 0.9, gen);
-    const Vec xStar = randomVector(n, gen);
-    const MapFn G = linearMap(A, xStar);
-    const Vec x0 = randomVector(n, gen);
+    const LinearProblem lp(10, 10, 0.9);
 
     double norms[2];
     int i = 0;
@@ -939,14 +927,7 @@ TEST(AndersonAcceleration, RegularisationDampsGamma)
         AndersonAcceleration::Parameters p = params(3, 1.0);
         p.regularisation = reg;
         AndersonAcceleration aa(p);
-        Vec x = x0;
-        for (int k = 0; k < 5; ++k)
-        {
-            const Vec g = G(x);
-            Vec xNext(n);
-            aa.update(x.data(), g.data(), xNext.data(), n);
-            x = xNext;
-        }
+        iterate(aa, lp.G, lp.x0, 5);
         ASSERT_EQ(aa.nColumns(), 3);
         norms[i++] = aa.gamma().norm();
     }

@@ -1,0 +1,193 @@
+"""What the contact patch tests share (tutorials/contactPatchTest in 2D and
+contactPatchTest3D): a column of two blocks, height L, pressed together by
+Delta across a non-matching interface. The exact state is a uniform normal
+stress sigma = -E Delta / L (E the column's modulus) with the contact
+pressure |sigma| on every face; with the penalty method the penalty spring
+is in series with the column, and the state is uniform too, with
+    sigma_pen = -E Delta / (L + E/eps_N),    eps_N = penaltyScale K / h
+(K = 2 mu + lambda, h = V/A of the slave face cells), so every cell's
+relative error is the offset 1 - L/(L + E/eps_N).
+
+The validation scripts keep the constants of their case and the tolerances,
+with where the tolerances come from; this module reads the fields, builds
+the checks from those numbers, and prints and plots what the two have in
+common. A check is a dict as c4fpost.report describes.
+"""
+import os
+
+import numpy as np
+
+from c4fpost import contactreport, foamio, hertz
+
+# symmTensor order in OpenFOAM files: xx xy xz yy yz zz
+_SYMM = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
+
+
+def stress_tensor(case, time, ncells):
+    """sigma of every cell at `time`, an (ncells, 3, 3) array."""
+    s6 = foamio.read_internal(os.path.join(case, time, "sigma"), ncells)
+    S = np.empty((ncells, 3, 3))
+    for k, (i, j) in enumerate(_SYMM):
+        S[:, i, j] = S[:, j, i] = s6[:, k]
+    return S
+
+
+def uniformity(s, exact):
+    """(max |s - exact|/|exact|, (max s - min s)/|exact|) over the cells."""
+    rel = np.abs(s - exact) / abs(exact)
+    return float(rel.max()), float((s.max() - s.min()) / abs(exact))
+
+
+def set_passed(checks):
+    """passed = error <= tolerance, where a check does not say already."""
+    for c in checks:
+        c.setdefault("passed", bool(c["error"] <= c["tolerance"]))
+
+
+class PatchTest:
+    """One patch test: `name` prefixes the check names; the contact pair
+    `slave` / `master`; the column's `delta` and `length` (L); `exact_tol`,
+    the tolerance of the exact state (a fraction of |sigma_exact|), and
+    `offset_tol`, that of the penalty offset (a fraction of the offset)."""
+
+    def __init__(self, name, slave, master, delta, length, exact_tol, offset_tol):
+        self.name = name
+        self.slave = slave
+        self.master = master
+        self.delta = delta
+        self.length = length
+        self.exact_tol = exact_tol
+        self.offset_tol = offset_tol
+
+    def slave_geometry(self, case, V):
+        """Face centres Cf and areas |Sf| of the slave patch, its face cells
+        and h = V/A of those cells."""
+        Cf, Sf = hertz.patch_geometry(case, self.slave)
+        area = np.linalg.norm(Sf, axis=1)
+        cells = foamio.patch_face_cells(case, self.slave)
+        return Cf, area, cells, V[cells] / area
+
+    def stress_checks(self, case, res, comp, penalty, modulus, K, h):
+        """The checks on the normal stress `comp` (syy, szz) of a column of
+        the given modulus, from res's exact, maxRel and spread: with
+        `penalty`, the offset that eps_N (penaltyScale from 0/D, the mean
+        over the slave cells' h) predicts and the uniformity; otherwise the
+        exact state. Adds predicted and offset (with the penalty also
+        penaltyScale and eps) to res. Returns (checks, predicted stress,
+        tolerance of the contact force)."""
+        maxRel, spread = res["maxRel"], res["spread"]
+        units = "fraction of |sigma_exact|"
+        if not penalty:
+            predicted = res["exact"]
+            res.update(predicted=predicted, offset=0.0)
+            return [dict(name="%s/%s_max_rel_error" % (self.name, comp), value=maxRel,
+                         reference=0.0, error=maxRel, tolerance=self.exact_tol,
+                         units=units)], predicted, self.exact_tol
+        s = hertz.read_entry(os.path.join(case, "0", "D"), "penaltyScale")
+        eps = s * K / h
+        if np.ptp(eps) > 1e-12 * eps.max():
+            print("NOTE: the slave cells' h = V/A varies (%g .. %g); using the mean"
+                  % (h.min(), h.max()))
+        eps = float(eps.mean())
+        predicted = -modulus * self.delta / (self.length + modulus / eps)
+        offset = 1.0 - self.length / (self.length + modulus / eps)
+        tol = self.offset_tol * offset
+        res.update(penaltyScale=s, eps=eps, predicted=predicted, offset=offset)
+        checks = [
+            dict(name="%s/%s_penalty_offset" % (self.name, comp), value=maxRel,
+                 reference=offset, error=abs(maxRel - offset), tolerance=tol, units=units),
+            dict(name="%s/%s_uniformity" % (self.name, comp), value=spread, reference=0.0,
+                 error=spread, tolerance=self.exact_tol, units=units),
+        ]
+        return checks, predicted, tol
+
+    def force_checks(self, case, time, res, area, predicted, tol):
+        """The total normal force on the slave patch, sum_f p_f |Sf_f|, and
+        the last normalForce of its contactReport when there is one, against
+        |predicted| times the patch area. Adds report, F, Fref and slaveP
+        (the faces' contactPressure) to res; returns the checks."""
+        p = foamio.read_patch(os.path.join(case, time, "contactPressure"), self.slave, area.size)
+        F = float(np.sum(p * area))
+        Fref = abs(predicted) * float(area.sum())
+        checks = [dict(name=self.name + "/contact_force", value=F, reference=Fref,
+                       error=abs(F - Fref) / Fref, tolerance=tol, units="N")]
+        rep = contactreport.last_row(case, self.slave)
+        if rep and "normalForce" in rep:
+            Fr = rep["normalForce"]
+            checks.append(dict(name=self.name + "/contactReport_normalForce", value=Fr,
+                               reference=Fref, error=abs(Fr - Fref) / Fref, tolerance=tol,
+                               units="N"))
+        res.update(report=rep, F=F, Fref=Fref, slaveP=p.tolist())
+        return checks
+
+    def master_pressure(self, case, time, res, R=None):
+        """Adds the master patch's face centres' x (x' = R^T x with R) and
+        contactPressure to res as masterX and masterP."""
+        Cf, _ = hertz.patch_geometry(case, self.master)
+        p = foamio.read_patch(os.path.join(case, time, "contactPressure"), self.master, len(Cf))
+        res.update(masterX=(Cf if R is None else Cf @ R)[:, 0].tolist(), masterP=p.tolist())
+
+    def print_force(self, res):
+        print("  contact force on %s: %.9g N (expected %.9g N)"
+              % (self.slave, res["F"], res["Fref"]))
+        if res["report"] is None:
+            print("  (no postProcessing/contactReport/*/%s.dat)" % self.slave)
+
+
+def print_constants(res, stress):
+    """The material and the exact value of `stress` (its printed name)."""
+    print("  E = %g Pa, nu = %g, K = 2mu + lambda = %g Pa; exact %s = %g Pa"
+          % (res["E"], res["nu"], res["K"], stress, res["exact"]))
+
+
+def print_stress(res, stress, penalty):
+    """The penalty prediction (with `penalty`) and the error and spread of
+    `stress` (its printed name) over the cells."""
+    if penalty:
+        print("  penalty: scale %g, h = V/A = %g m, eps_N = %g Pa/m -> sigma = %.9g Pa,"
+              " offset %.6g" % (res["penaltyScale"], np.mean(res["h"]), res["eps"],
+                                res["predicted"], res["offset"]))
+    print("  max |%s - exact|/|exact| = %.4g, (max - min)/|exact| = %.4g"
+          % (stress, res["maxRel"], res["spread"]))
+
+
+def pyplot():
+    """matplotlib.pyplot with the Agg backend (no display needed)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def plot_centre_line(ax, res, penalty, stress, height, label, interface, xlabel, ylabel):
+    """The stress of the cells of the vertical centre line (`stress`, at
+    `height`) as a fraction of |sigma_exact|, the exact stress and, with
+    `penalty`, the predicted one, and the interface (a dotted line at
+    `interface`)."""
+    ax.plot(np.array(stress) / abs(res["exact"]), height, "o", label=label)
+    ax.axvline(-1.0, color="k", lw=1, label="exact (gap closed)")
+    if penalty:
+        ax.axvline(-abs(res["predicted"]) / abs(res["exact"]), color="C3", ls="--", lw=1,
+                   label="penalty prediction")
+    ax.axhline(interface, color="0.6", ls=":", lw=1)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title("stress along the vertical centre line")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+
+
+def mark_pressure(ax, res, penalty):
+    """On an axis of p/|sigma_exact|: the exact contact pressure and, with
+    `penalty`, the predicted one as horizontal lines."""
+    ax.axhline(1.0, color="k", lw=1, label="exact")
+    if penalty:
+        ax.axhline(abs(res["predicted"]) / abs(res["exact"]), color="C3", ls="--", lw=1,
+                   label="penalty prediction")
+
+
+def save(fig, axes, png):
+    for ax in axes:
+        ax.ticklabel_format(useOffset=False)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
