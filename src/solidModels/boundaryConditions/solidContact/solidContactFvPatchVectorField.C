@@ -781,34 +781,35 @@ void Foam::solidContactFvPatchVectorField::evaluate
         updateCoeffs();
     }
 
-    // The tractions of the solve just made, from its cell values: the face
-    // values then agree with what the matrix held
+    // The tractions and face values of the solve just made, from its cell
+    // values: the face values then agree with what the matrix held.
+    // updateFromCells sets the values, so fixedGradient's evaluate (which
+    // would set them again) is skipped
     updateFromCells();
 
-    fixedGradientFvPatchVectorField::evaluate(commsType);
+    fvPatchVectorField::evaluate(commsType);
 }
 
 
 void Foam::solidContactFvPatchVectorField::updateFromCells()
 {
-    if (!coupling())
+    if (coupling())
     {
-        return;
+        const vectorField F(contactForce(primitiveField()));
+        traction_ = F/patch().magSf();
+        gradient() =
+            (traction_ - explicitTraction_)
+           /solidPatchTractions::impK(patch());
+        pressure_ =
+            master_
+          ? scalarField(-(traction_ & patch().nf()))
+          : scalarField(traction_ & pair_->normal());
     }
 
-    const vectorField F(contactForce(primitiveField()));
-    traction_ = F/patch().magSf();
-    gradient() =
-        (traction_ - explicitTraction_)
-       /solidPatchTractions::impK(patch());
-    pressure_ =
-        master_
-      ? scalarField(-(traction_ & patch().nf()))
-      : scalarField(traction_ & pair_->normal());
-
-    // The face values follow from the cells and the traction, as after a
-    // solve: set from outside a solve (an accelerated iterate), a face
-    // value would otherwise disagree with the gradient grad D reads
+    // The face values follow from the cells and the gradient, as after a
+    // solve (before the first contact update: the gradient read or
+    // initialised). Set from outside a solve (an accelerated iterate), a
+    // face value would otherwise disagree with the gradient grad D reads
     Field<vector>::operator=
     (
         patchInternalField() + gradient()/patch().deltaCoeffs()
