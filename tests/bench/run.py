@@ -48,6 +48,7 @@ sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
 import numpy as np  # noqa: E402
 from c4fpost import contactfree, foamio, kirsch  # noqa: E402
 import compareHertz  # noqa: E402
+import scaleMesh  # noqa: E402
 import compareKirsch  # noqa: E402
 
 PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
@@ -173,18 +174,7 @@ def hertz_prepare(level=1.0, method="lagrangeMultiplier", rebuild=None):
     scaled by `level` (2: what its Allrun's -refine 2 does), the contact
     method (and the search tree's rebuild tolerance), blockMesh."""
     def prepare(case):
-        bmd = os.path.join(case, "system/blockMeshDict")
-        text = open(bmd).read()
-
-        def scale(m):
-            return "%s%d%s" % (m.group(1), max(1, round(int(m.group(2)) * level)), m.group(3))
-        # counts in the multi-grading tuples and the n* macros
-        text = re.sub(r"^\w+Grading\s.*$",
-                      lambda line: re.sub(r"(\(\s*[0-9.]+\s+)(\d+)(\s+[0-9.]+\s*\))", scale,
-                                          line.group(0)),
-                      text, flags=re.M)
-        text = re.sub(r"^(n\w+\s+)(\d+)(;)", scale, text, flags=re.M)
-        open(bmd, "w").write(text)
+        scaleMesh.scale_block_mesh(os.path.join(case, "system/blockMeshDict"), level)
         d = os.path.join(case, "0/D")
         text = open(d).read()
         text = re.sub(r"^(\s*method\s+)\w+;", r"\g<1>%s;" % method, text, flags=re.M)
