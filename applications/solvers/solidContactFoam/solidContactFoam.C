@@ -46,7 +46,7 @@ Description
     history starts afresh with each load step and whenever a contact
     patch changed its active set. `acceleration none` is the plain
     iteration. Measured at tolerance 1e-9: plateHole 36 correctors
-    instead of 204, hertzCylinder 78 (LM) instead of 305; make bench
+    instead of 204, hertzCylinder 50 (LM) instead of 305; make bench
     prints the table.
 
     Components of D whose magnitude stays below 1e-10 of the largest are

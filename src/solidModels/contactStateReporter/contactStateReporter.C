@@ -84,16 +84,3 @@ bool Foam::contactStateReporter::activeSetChanged(const volVectorField& D)
     );
     return changes > 0;
 }
-
-
-void Foam::contactStateReporter::updateFromCells(volVectorField& D)
-{
-    forEachReporter<contactStateReporter>
-    (
-        D.boundaryFieldRef(),
-        [](contactStateReporter& rep, const label)
-        {
-            rep.updateFromCells();
-        }
-    );
-}

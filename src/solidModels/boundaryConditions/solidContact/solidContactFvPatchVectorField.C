@@ -396,6 +396,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
 
     const solidContactFvPatchVectorField& master = shadow();
 
+    const bool firstUpdate = !pair_.valid();
     if (!pair_.valid())
     {
         if (searchDistance_ < 0)
@@ -422,7 +423,19 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     const vectorField Df(*this);
     pair_->update(master, Df, tpointD());
 
-    // 2. The state of the last solve; its pressure is the reaction
+    // 2. The reaction of the current state, from its face values and
+    // gradient: the last solve's pressure, or the pressure of the state
+    // the outer loop set (an accelerated iterate); so the method's decision
+    // depends on the current D alone, not on how it was reached
+    explicitTraction_ = solidPatchTractions::explicitNormalTraction(patch());
+    if (!firstUpdate)
+    {
+        traction_ =
+            solidPatchTractions::impK(patch())*gradient() + explicitTraction_;
+        pressure_ = traction_ & pair_->normal();
+    }
+
+    // 3. The state
     contactSlaveState state;
     state.gap = pair_->gap();
     state.normal = pair_->normal();
@@ -432,12 +445,11 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     state.reaction = pressure_;
     state.inRange = pair_->inRange();
 
-    // 3. The method's decision
+    // 4. The method's decision
     method_->correct(state, cond_);
 
-    // 4. The coupling of this corrector
+    // 5. The coupling of this corrector
     const fvPatch& mp = master.patch();
-    explicitTraction_ = solidPatchTractions::explicitNormalTraction(patch());
 
     contactInterfaceCoupling::inputs in;
     in.coupled = cond_.coupled;
@@ -459,7 +471,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
 
     coupling_->set(in);
 
-    // 5. This patch's matrix coefficients
+    // 6. This patch's matrix coefficients
     setCoefficients(contactForce(primitiveField()), coupling_->slaveDiag());
 
     // The force this corrector starts from: its change in the corrector is
@@ -806,10 +818,8 @@ void Foam::solidContactFvPatchVectorField::updateFromCells()
           : scalarField(traction_ & pair_->normal());
     }
 
-    // The face values follow from the cells and the gradient, as after a
-    // solve (before the first contact update: the gradient read or
-    // initialised). Set from outside a solve (an accelerated iterate), a
-    // face value would otherwise disagree with the gradient grad D reads
+    // The face values follow from the cells and the gradient (before the
+    // first contact update: the gradient read or initialised)
     Field<vector>::operator=
     (
         patchInternalField() + gradient()/patch().deltaCoeffs()

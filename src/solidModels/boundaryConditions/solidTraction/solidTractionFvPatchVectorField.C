@@ -183,16 +183,6 @@ void Foam::solidTractionFvPatchVectorField::rmap
 }
 
 
-void Foam::solidTractionFvPatchVectorField::setFaceValues
-(
-    const vectorField& v
-)
-{
-    gradient() = (v - patchInternalField())*patch().deltaCoeffs();
-    Field<vector>::operator=(v);
-}
-
-
 void Foam::solidTractionFvPatchVectorField::updateCoeffs()
 {
     if (updated())

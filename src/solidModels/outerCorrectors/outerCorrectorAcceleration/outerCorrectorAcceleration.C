@@ -4,8 +4,7 @@
 
 #include "outerCorrectorAcceleration.H"
 #include "Enum.H"
-#include "contactStateReporter.H"
-#include "solidTractionFvPatchVectorField.H"
+#include "fixedGradientFvPatchFields.H"
 
 #include <stdexcept>
 
@@ -109,21 +108,19 @@ void Foam::outerCorrectorAcceleration::scatter(const std::vector<double>& x)
                     vi[d] = x[i++];
                 }
             }
-            if (isA<solidTractionFvPatchVectorField>(pf))
+            if (isA<fixedGradientFvPatchVectorField>(pf))
             {
-                refCast<solidTractionFvPatchVectorField>(pf)
-                    .setFaceValues(v);
+                // The gradient is the condition's state between correctors
+                // (grad D takes its boundary normal part from it): it goes
+                // with the face value, or the previous iterate's would stay
+                fixedGradientFvPatchVectorField& fg =
+                    refCast<fixedGradientFvPatchVectorField>(pf);
+                fg.gradient() =
+                    (v - fg.patchInternalField())*fg.patch().deltaCoeffs();
             }
-            else
-            {
-                pf == v;
-            }
+            pf == v;
         }
     }
-
-    // The contact reactions (they decide the next active set) and the
-    // contact face values from the new cells
-    contactStateReporter::updateFromCells(D_);
 }
 
 
@@ -153,8 +150,9 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
     }
 
     // The depth is checked whether or not it is used
-    // 15 columns: hertzCylinder (LM) takes 104 correctors with 5, 90 with
-    // 10, 78 with 15, 75 with 20; each column holds two state vectors
+    // 15 columns: hertzCylinder (LM) takes 64 correctors with 5, 52 with
+    // 10, 50 with 15, 20 or 30 (plateHole 43, 38, 36, 36, 36); each column
+    // holds two state vectors
     c4f::coupling::AndersonParameters p;
     p.depth = solidControls.getOrDefault<label>("andersonDepth", 15);
     try
