@@ -1,0 +1,41 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "perturbedLagrangeLaw.H"
+
+#include <algorithm>
+
+namespace c4f
+{
+namespace contact
+{
+
+double perturbedLagrangeUpdate
+(
+    const double lambda,
+    const double gap,
+    const double eps,
+    const double Kc
+)
+{
+    // Compliances rather than stiffnesses, so that eps = inf (the
+    // Lagrange-multiplier limit) is an ordinary input
+    const double step =
+        perturbedLagrangeResidual(lambda, gap, eps)/(1.0/Kc + 1.0/eps);
+    return std::max(0.0, lambda + step);
+}
+
+
+double perturbedLagrangeResidual
+(
+    const double lambda,
+    const double gap,
+    const double eps
+)
+{
+    return -gap - lambda/eps;
+}
+
+} // End namespace contact
+} // End namespace c4f
