@@ -30,7 +30,12 @@ Description
       - no contact patch changed its active set in that corrector;
       - the total normal force of every contact patch changed by less than
         `tolerance` relative in that corrector (from the state the
-        corrector started from to the state its solve gave).
+        corrector started from to the state its solve gave);
+      - every contact method with stored multipliers (augmented Lagrange,
+        cross-constraint) found them converged: when the three tests above
+        pass, such a method updates its multipliers (Uzawa), and while they
+        move the correctors go on from the converged state; a method that
+        reaches its maximum number of updates unconverged fails the step.
     The plain iteration keeps the solve's D at convergence; the
     accelerated one keeps the state the test was made at, which is a fixed
     point of the corrector to the tolerance (the traction and contact
@@ -74,6 +79,9 @@ Usage
         andersonDepth | difference columns kept (>= 1)         | no       | 15
     \endtable
 
+    `solidContactFoam -listMethods` prints the contact methods of the
+    run-time selection table, one per line.
+
     \verbatim
     solidMechanics
     {
@@ -92,6 +100,7 @@ Usage
 #include "volPointInterpolation.H"
 #include "mechanicalModel.H"
 #include "contactStateReporter.H"
+#include "contactMethod.H"
 #include "contactFvMesh.H"
 #include "outerCorrectorAcceleration.H"
 
@@ -103,7 +112,38 @@ int main(int argc, char *argv[])
         " with contact"
     );
 
-    #include "setRootCase.H"
+    argList::addBoolOption
+    (
+        "listMethods",
+        "print the contact methods (the values of a solidContact slave's"
+        " `method` entry), one per line, and exit"
+    );
+
+    // Tutorials, tests and benchmarks take the method list from here: it
+    // is the run-time selection table, so a new method is found by all.
+    // Printed before argList's banner, so that it is the whole output
+    for (int i = 1; i < argc; ++i)
+    {
+        if (std::string(argv[i]) == "-listMethods")
+        {
+            for
+            (
+                const word& m
+              : contactMethod::dictionaryConstructorTablePtr_->sortedToc()
+            )
+            {
+                std::cout << m << '\n';
+            }
+            return 0;
+        }
+    }
+
+    argList args(argc, argv);
+
+    if (!args.checkRootCase())
+    {
+        FatalError.exit();
+    }
     #include "createTime.H"
     #include "createContactMesh.H"
     #include "readSolidMechanicsControls.H"
@@ -119,6 +159,7 @@ int main(int argc, char *argv[])
         label nCorr = 0;
         scalar residual = GREAT;
         bool converged = false;
+        bool multipliersExhausted = false;
 
         acceleration.reset();
 
@@ -162,15 +203,29 @@ int main(int argc, char *argv[])
                 residual < tolerance
              && contactStateReporter::converged(D, tolerance);
 
-            // A converged step keeps the state the test was made at;
-            // otherwise the next iterate is the accelerated one (a new
-            // active set starts a new history)
             if (converged)
             {
+                // A converged step keeps the state the test was made at
                 acceleration.accept();
+
+                // Methods with stored multipliers update them now; while
+                // they move the step goes on from this state, with a new
+                // history (the map changed with them)
+                if (contactStateReporter::updateMultipliers(D))
+                {
+                    converged = false;
+                    acceleration.reset();
+                }
+                else if (!contactStateReporter::multipliersConverged(D))
+                {
+                    converged = false;
+                    multipliersExhausted = true;
+                }
             }
             else
             {
+                // The next iterate is the accelerated one (a new active
+                // set starts a new history)
                 acceleration.accelerate
                 (
                     contactStateReporter::activeSetChanged(D)
@@ -192,7 +247,7 @@ int main(int argc, char *argv[])
                 Info<< endl;
             }
         }
-        while (!converged && nCorr < nCorrectors);
+        while (!converged && !multipliersExhausted && nCorr < nCorrectors);
 
         sigmaEq = sqrt((3.0/2.0)*magSqr(dev(sigma)));
         volPointInterpolation::New(mesh).interpolate(D, pointD);
@@ -220,7 +275,14 @@ int main(int argc, char *argv[])
                     << " did not converge in nCorrectors = " << nCorrectors
                     << ": residual " << residual << " (tolerance "
                     << tolerance << ")"
-                    << (residual < tolerance ? ", contact state still changing" : "")
+                    << (
+                           multipliersExhausted
+                         ? ", the contact multipliers did not converge in"
+                           " the method's maximum number of updates"
+                         : residual < tolerance
+                         ? ", contact state still changing"
+                         : ""
+                       )
                     << nl << "Contact state:"
                     << (contactSummary.empty() ? " none" : contactSummary.c_str())
                     << nl << "Raise nCorrectors, or set 'onNonConvergence"

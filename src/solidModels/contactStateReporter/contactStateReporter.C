@@ -84,3 +84,36 @@ bool Foam::contactStateReporter::activeSetChanged(const volVectorField& D)
     );
     return changes > 0;
 }
+
+
+bool Foam::contactStateReporter::updateMultipliers(volVectorField& D)
+{
+    bool updated = false;
+    forEachReporter<contactStateReporter>
+    (
+        D.boundaryFieldRef(),
+        [&](contactStateReporter& rep, const label)
+        {
+            updated = rep.updateMultipliers() || updated;
+        }
+    );
+    return updated;
+}
+
+
+bool Foam::contactStateReporter::multipliersConverged
+(
+    const volVectorField& D
+)
+{
+    bool conv = true;
+    forEachReporter<const contactStateReporter>
+    (
+        D.boundaryField(),
+        [&](const contactStateReporter& rep, const label)
+        {
+            conv = rep.multipliersConverged() && conv;
+        }
+    );
+    return conv;
+}

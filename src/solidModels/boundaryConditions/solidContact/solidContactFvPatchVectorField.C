@@ -266,7 +266,9 @@ void Foam::solidContactFvPatchVectorField::initSlave()
     method_ = contactMethod::New(patch(), dict_);
     cond_.setSize(patch().size());
 
-    // A restart continues from the written active set and pressure
+    // A restart continues from the written active set, pressure and the
+    // method's state
+    method_->state().read(dict_);
     if (dict_.found("contactPressure"))
     {
         cond_.pressure = scalarField("contactPressure", dict_, patch().size());
@@ -300,6 +302,17 @@ void Foam::solidContactFvPatchVectorField::setOutputFields
         .boundaryFieldRef()[patchi] == traction_;
     outputField<scalar>(mesh, "contactActive", dimless)
         .boundaryFieldRef()[patchi] == active;
+
+    // The method's state, where it has one (e.g. contactMultiplier)
+    if (method_.valid())
+    {
+        const contactFaceState& ms = method_->state();
+        for (const word& name : ms.names())
+        {
+            outputField<scalar>(mesh, name, ms.dimensions(name))
+                .boundaryFieldRef()[patchi] == ms[name];
+        }
+    }
 }
 
 
@@ -388,6 +401,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     if (timeIndex != timeIndex_)
     {
         timeIndex_ = timeIndex;
+        method_->beginStep();
         nCorrectors_ = 0;
         updateTime_ = 0;
         normalForce_ = GREAT;
@@ -447,6 +461,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
 
     // 4. The method's decision
     method_->correct(state, cond_);
+    lastState_ = state;
 
     // 5. The coupling of this corrector
     const fvPatch& mp = master.patch();
@@ -661,6 +676,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     if (!master_)
     {
         method_ = contactMethod::New(patch(), dict_);
+        method_->state().map(ptf.method_->state(), mapper);
         cond_.setSize(p.size());
         if (ptf.cond_.pressure.size() == ptf.size())
         {
@@ -716,6 +732,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     if (!master_)
     {
         method_ = contactMethod::New(patch(), dict_);
+        method_->state() = ptf.method_->state();
     }
 }
 
@@ -933,6 +950,7 @@ Foam::solidContactFvPatchVectorField::contactReport() const
     reduce(r.activeFaces, sumOp<label>());
     r.correctors = returnReduce(nCorrectors_, maxOp<label>());
     r.activeSetChanges = returnReduce(cond_.nChanged, sumOp<label>());
+    r.multiplierUpdates = method_->nMultiplierUpdates();
     r.updateTime = returnReduce(updateTime_, maxOp<scalar>());
     return r;
 }
@@ -962,6 +980,84 @@ bool Foam::solidContactFvPatchVectorField::contactConverged
 }
 
 
+bool Foam::solidContactFvPatchVectorField::updateMultipliers()
+{
+    if (master_ || !coupling())
+    {
+        return false;
+    }
+
+    // The converged state: the last update's geometry (it changed by less
+    // than the tolerance since) and the reaction of the last solve
+    lastState_.reaction = pressure_;
+    const bool updated = method_->updateMultipliers(lastState_, cond_);
+    if (updated)
+    {
+        setOutputFields(pair_->gap(), activeFraction(cond_.active));
+    }
+    return updated;
+}
+
+
+bool Foam::solidContactFvPatchVectorField::multipliersConverged() const
+{
+    return master_ || method_->multipliersConverged();
+}
+
+
+void Foam::solidContactFvPatchVectorField::autoMap
+(
+    const fvPatchFieldMapper& m
+)
+{
+    fixedGradientFvPatchVectorField::autoMap(m);
+    traction_.autoMap(m);
+    pressure_.autoMap(m);
+    if (!master_)
+    {
+        method_->state().autoMap(m);
+        if (cond_.pressure.size())
+        {
+            scalarField am(activeFraction(cond_.active));
+            am.autoMap(m);
+            cond_.pressure.autoMap(m);
+            cond_.setSize(m.size());
+            cond_.active = activeFlags(am);
+            cond_.coupled = cond_.active;
+        }
+    }
+    // The geometry and the coupling are rebuilt for the new faces
+    pair_.clear();
+    coupling_.clear();
+}
+
+
+void Foam::solidContactFvPatchVectorField::rmap
+(
+    const fvPatchVectorField& ptf,
+    const labelList& addr
+)
+{
+    fixedGradientFvPatchVectorField::rmap(ptf, addr);
+
+    const solidContactFvPatchVectorField& p =
+        refCast<const solidContactFvPatchVectorField>(ptf);
+    traction_.rmap(p.traction_, addr);
+    pressure_.rmap(p.pressure_, addr);
+    if (!master_ && p.cond_.pressure.size() == p.size())
+    {
+        method_->state().rmap(p.method_->state(), addr);
+
+        cond_.setSize(size());
+        cond_.pressure.rmap(p.cond_.pressure, addr);
+        scalarField am(activeFraction(cond_.active));
+        am.rmap(activeFraction(p.cond_.active), addr);
+        cond_.active = activeFlags(am);
+        cond_.coupled = cond_.active;
+    }
+}
+
+
 Foam::string Foam::solidContactFvPatchVectorField::contactState() const
 {
     if (master_)
@@ -974,8 +1070,12 @@ Foam::string Foam::solidContactFvPatchVectorField::contactState() const
     os  << "F_N = " << r.normalForce
         << "  active = " << r.activeFaces
         << "  maxPenetration = " << r.maxPenetration
-        << "  changes = " << r.activeSetChanges
-        << "  contactTime = " << r.updateTime << " s";
+        << "  changes = " << r.activeSetChanges;
+    if (method_->updatesMultipliers())
+    {
+        os  << "  multiplierUpdates = " << r.multiplierUpdates;
+    }
+    os  << "  contactTime = " << r.updateTime << " s";
     return os.str();
 }
 
@@ -1005,6 +1105,7 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
             pressure_.writeEntry("contactPressure", os);
             activeFraction(cond_.active).writeEntry("contactActive", os);
         }
+        method_->state().write(os);
     }
     gradient().writeEntry("gradient", os);
     writeEntry("value", os);

@@ -18,7 +18,8 @@ Foam::contactMethod::contactMethod
 )
 :
     patch_(patch),
-    coeffs_(coeffs)
+    coeffs_(coeffs),
+    state_(patch.size())
 {}
 
 
