@@ -4,6 +4,7 @@
 
 #include "zoned.H"
 #include "IOdictionary.H"
+#include "IFstream.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -55,16 +56,16 @@ void Foam::solidMaterialLaws::zoned::checkNoDuplicates
         return;
     }
 
-    IOobject io(*file);
-    io.readOpt() = IOobject::MUST_READ;
-    io.writeOpt() = IOobject::NO_WRITE;
-    io.registerObject() = false;
-
-    // OpenFOAM's own error names the keyword, the file and the line
+    // The file once more, read as it is (operator>> would reset the mode
+    // to merge); OpenFOAM's own error names the keyword, file and line.
+    // The master reads it and stops every processor on an error.
     const entry::inputMode mode = entry::globalInputMode;
     entry::globalInputMode = entry::inputMode::ERROR;
+    if (Pstream::master())
     {
-        IOdictionary strict(io);
+        IFstream is(file->filePath());
+        dictionary strict;
+        strict.read(is);
     }
     entry::globalInputMode = mode;
 }
