@@ -8,7 +8,10 @@ iteration (acceleration none) and the accelerated default (Anderson,
 andersonDepth 15). The cases: plateHole (no contact), hertzCylinder on the
 default mesh and at 4x the cells (every cell count of blockMeshDict times
 2, what its Allrun's -refine 2 does) and the four contactPatchTest3D
-variants (axis-aligned, -rotate, -nu 0.3, both). The problems: the contact-
+variants (axis-aligned, -rotate, -nu 0.3, both), and hertzCylinder with a
+near-rigid cylinder (1000 x the block's E) with each body as the slave,
+whose correctors are also given over the equal-material case's. The
+problems: the contact-
 free equivalent, the Lagrange multiplier and the penalty method; each
 contact row gives its correctors over those of its contact-free equivalent
 with the same iteration, the segregated solver's floor for that mesh.
@@ -61,6 +64,10 @@ CAPPED = {"nCorrectors": "5000", "onNonConvergence": "continue"}
 ITERATIONS = (("plain", dict(CAPPED, acceleration="none")),
               ("accelerated", CAPPED))            # the default: anderson, depth 15
 PROBLEMS = ("contact-free", "lagrangeMultiplier", "penalty")
+# The near-rigid indenter's cases: (label, Allrun arguments)
+NEAR_RIGID = tuple(("hertzCylinder nearRigidCylinder -slave " + slave,
+                    ("-materials", "nearRigidCylinder", "-slave", slave))
+                   for slave in ("block", "cylinder"))
 
 
 def sh(cmd, cwd):
@@ -248,6 +255,19 @@ def convergence_rows():
                             prepare=contact_free_prepare(lm["case"]))
                  if lm["converged"] else None)
 
+    # hertzCylinder with a near-rigid cylinder (1000 x the aluminium
+    # block's E), each body as the slave: correctors against the equal-
+    # material (steel) rows above
+    for label, args in NEAR_RIGID:
+        cases.append((label, PROBLEMS[1:]))
+        tag = label.split()[-1]
+        for it, entries in ITERATIONS:
+            for method in PROBLEMS[1:]:
+                note((label, method, it),
+                     bench_case("conv_hertz_nearRigid_%s_%s_%s" % (tag, method, it),
+                                os.path.join(tut, "hertzCylinder"), entries,
+                                allrun=list(args) + ["-method", method]))
+
     # contactPatchTest3D: -noContact prescribes the exact state
     for variant in ((), ("-rotate",), ("-nu", "0.3"), ("-rotate", "-nu", "0.3")):
         label = " ".join(("contactPatchTest3D",) + variant)
@@ -271,19 +291,27 @@ def convergence_rows():
                 if problem != "contact-free":
                     ratio = ("%.2f" % (r["ncorr"] / free["ncorr"])
                              if r and free and r["ncorr"] and free["ncorr"] else "n/a")
+                # The near-rigid indenter against the same problem with
+                # like materials
+                equal = ""
+                if label in dict(NEAR_RIGID):
+                    ratio = ""
+                    same = runs.get(("hertzCylinder", problem, it))
+                    equal = ("%.2f" % (r["ncorr"] / same["ncorr"])
+                             if r and same and r["ncorr"] and same["ncorr"] else "n/a")
                 if r is None:
-                    rows.append((label, problem, it, "-", "-", "not run", ratio))
+                    rows.append((label, problem, it, "-", "-", "not run", ratio, equal))
                 else:
                     rows.append((label, problem, it,
                                  "-" if r["ncorr"] is None else "%d" % r["ncorr"],
                                  "%.3f" % r["wall_step"],
-                                 "yes" if r["converged"] else "no", ratio))
+                                 "yes" if r["converged"] else "no", ratio, equal))
     return rows, runs
 
 
 def convergence_table(rows, runs):
     head = ("case", "problem", "iteration", "correctors", "wall time per step [s]",
-            "converged", "correctors / contact-free")
+            "converged", "correctors / contact-free", "correctors / equal materials")
     widths = [max(len(x[i]) for x in (head,) + tuple(rows)) for i in range(len(head))]
 
     def line(cells):
@@ -309,6 +337,11 @@ def convergence_table(rows, runs):
         " Lagrange multiplier rows (hertzCylinder: the one built from the Lagrange multiplier"
         " run; contactPatchTest3D: the exact state), not one built from the penalty solution,"
         " which differs from it by the penalty's penetration.",
+        "",
+        "hertzCylinder nearRigidCylinder: `Allrun -materials nearRigidCylinder -slave <body>`,"
+        " the cylinder 1000 times stiffer than the aluminium block (a law per cellZone); its"
+        " last column is its correctors over those of the same problem and iteration on"
+        " hertzCylinder (both bodies steel).",
     ]
     if notfree:
         notes += ["", "Not built (its Lagrange multiplier run did not converge): the contact-free"

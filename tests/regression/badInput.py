@@ -9,7 +9,12 @@ CRASH_MARKERS = ("sigSegv", "Segmentation fault", "sigFpe", "Aborted", "core dum
 
 
 def _edit(case, relpath, pattern, repl, count=1):
+    """Replace `pattern` in the file; with pattern None write a new file."""
     path = os.path.join(case, relpath)
+    if pattern is None:
+        with open(path, "w") as f:
+            f.write(repl)
+        return
     text = open(path).read()
     new, n = re.subn(pattern, repl, text, count=count, flags=re.M)
     if n == 0:
@@ -19,6 +24,24 @@ def _edit(case, relpath, pattern, repl, count=1):
 
 
 MP = "constant/mechanicalProperties"
+
+# A zoned law for contactPatchTest (cellZones lower and upper) in place of
+# its #include line; `entries` is the body of zonedCoeffs
+INCLUDE = r'^#include\s+"materials/equal"'
+LAW = "{ materialLaw linearElastic; linearElasticCoeffs { E 1e6; nu 0; } }"
+
+
+def zoned(entries):
+    return "materialLaw zoned;\nzonedCoeffs\n{\n%s\n}\n" % entries
+
+
+# A cellZone `all` of every cell, which overlaps both blocks' zones
+TOPOSET = """FoamFile { version 2.0; format ascii; class dictionary; object topoSetDict; }
+actions
+(
+    { name all; type cellZoneSet; action new; source boxToCell; box (-1 -1 -1) (2 2 2); }
+);
+"""
 
 # name, tutorial, [(file, pattern, replacement)], expected texts in the output
 CASES = [
@@ -78,8 +101,8 @@ CASES = [
      ["FOAM FATAL IO ERROR", "shadowPatch upperBotom", "there is no patch upperBotom",
       "Valid patches", "lowerTop"]),
     ("shadowPatchNotContact", "contactPatchTest",
-     [("0/D", r"(upperBottom\s*\{\s*)type\s+solidContact;\s*shadowPatch\s+lowerTop;\s*master\s+yes;",
-       r"\1type solidTraction; traction constant (0 0 0);")],
+     [("0/D", r"(upperBottom\s*\{\s*)\$master;\s*shadowPatch\s+lowerTop;",
+       r"\1type solidTraction; traction constant (0 0 0); value uniform (0 0 0);")],
      ["FOAM FATAL IO ERROR", "has type 'solidTraction'", "must be solidContact", "upperBottom"]),
     ("bothMaster", "contactPatchTest",
      [("0/D", r"^(\s*)master\s+no;", r"\1master yes;")],
@@ -110,6 +133,29 @@ CASES = [
        r"\1solidContact; shadowPatch lowerTop; master yes; value uniform (0 0 0);")],
      # OpenFOAM's own constraint-type check stops it before our constructor
      ["FOAM FATAL IO ERROR", "frontAndBack", "patch type empty and patchField type solidContact"]),
+    # The zoned law: every bad entry named
+    ("zonedUnknownZone", "contactPatchTest",
+     [(MP, INCLUDE, zoned("lower %s\nuppr %s" % (LAW, LAW)))],
+     ["FOAM FATAL IO ERROR", "Entry 'uppr'", "is not a cellZone", "lower", "upper",
+      "zonedCoeffs"]),
+    ("zonedZoneTwice", "contactPatchTest",
+     [(MP, INCLUDE, zoned("lower %s\nupper %s\nlower %s" % (LAW, LAW, LAW)))],
+     ["FOAM FATAL IO ERROR", "duplicate entry: lower", "mechanicalProperties"]),
+    ("zonedOverlappingZones", "contactPatchTest",
+     [(MP, INCLUDE, zoned("lower %s\nall %s" % (LAW, LAW))),
+      ("system/topoSetDict", None, TOPOSET)],
+     ["FOAM FATAL IO ERROR", "Entries 'lower' and 'all'", "overlapping cellZones",
+      "share 50 cells", "zonedCoeffs"]),
+    ("zonedMissingLaw", "contactPatchTest",
+     [(MP, INCLUDE, zoned("lower %s\nupper { linearElasticCoeffs { E 1e6; nu 0; } }" % LAW))],
+     ["FOAM FATAL IO ERROR", "Entry 'upper'", "has no law", "materialLaw", "zonedCoeffs"]),
+    ("zonedUnassignedCells", "contactPatchTest",
+     [(MP, INCLUDE, zoned("lower %s" % LAW))],
+     ["FOAM FATAL IO ERROR", "28 cells of the mesh are in no cellZone", "default",
+      "zonedCoeffs"]),
+    ("zonedNested", "contactPatchTest",
+     [(MP, INCLUDE, zoned("lower %s\nupper { materialLaw zoned; zonedCoeffs {} }" % LAW))],
+     ["FOAM FATAL IO ERROR", "Entry 'upper'", "selects materialLaw zoned"]),
     ("missingTraction", "plateHole",
      [("0/D", r"(right\s*\{[^}]*?)\btraction\s[^;]*;", r"\1")],
      ["FOAM FATAL IO ERROR", "traction", "right"]),
@@ -128,8 +174,10 @@ def run_one(res, root, work, run, name, tutorial, edits, expected):
         res.add("badInput/" + name, False, note=str(e))
         return
     rc, out = run(["blockMesh"], cwd=case, log=os.path.join(case, "log.blockMesh"))
+    if rc == 0 and os.path.exists(os.path.join(case, "system/topoSetDict")):
+        rc, out = run(["topoSet"], cwd=case, log=os.path.join(case, "log.topoSet"))
     if rc != 0:
-        res.add("badInput/" + name, False, note="blockMesh failed")
+        res.add("badInput/" + name, False, note="blockMesh or topoSet failed")
         return
     rc, out = run(["solidContactFoam"], cwd=case, log=os.path.join(case, "log.solidContactFoam"))
     missing = [e for e in expected if e not in out]

@@ -99,6 +99,7 @@ Usage
 #include "pointFields.H"
 #include "volPointInterpolation.H"
 #include "mechanicalModel.H"
+#include "materialInterfaces.H"
 #include "contactStateReporter.H"
 #include "contactMethod.H"
 #include "contactFvMesh.H"
@@ -171,7 +172,11 @@ int main(int argc, char *argv[])
             fvVectorMatrix DEqn
             (
                 fvm::laplacian(impKf, D, "laplacian(DD,D)")
-              + fvc::div(mesh.Sf() & fvc::interpolate(sigma - impK*gradD))
+              + fvc::div
+                (
+                    mesh.Sf()
+                  & interfaces.interpolateExplicit(sigma - impK*gradD, impK)
+                )
             );
 
             DEqn.relax();
@@ -232,7 +237,7 @@ int main(int argc, char *argv[])
                 );
             }
 
-            gradD = fvc::grad(D);
+            gradD = interfaces.grad(D, sigma - impK*gradD, impK);
             sigma = mech.law().sigma(gradD);
 
             if (verbose)

@@ -30,6 +30,13 @@ and the predicted offset of every cell's relative error is
   ~1e-2 offset: 1e-3 of it has a factor 10 of margin) and
   (max - min sigma_yy)/|sigma_exact| <= 1e-6.
 
+Materials (constant/mechanicalProperties, one law or a zoned law with the
+zones lower and upper): the blocks, each L/2 high, are springs in series,
+so E above is the column's, L/(L/2/E_lower + L/2/E_upper); K of eps_N is
+the slave's (lowerTop, or upperBottom after Allrun -slave upper: the
+patch with `master no` in the written D). With -materials stiffUpper
+(1000:1) sigma_exact = -1.998e4 Pa.
+
 Both: the total normal force on the slave patch, sum_f p_f |Sf_f|, against
 |sigma| (exact or penalty) times the patch area (1 m x dz), with the same
 tolerance as the stress; and, when the contactReport function object wrote
@@ -51,32 +58,45 @@ import numpy as np  # noqa: E402
 
 DELTA = 0.01    # downward displacement of upperTop [m], 0/D
 L = 1.0         # height of the two-block column [m], system/blockMeshDict
-SLAVE = "lowerTop"
-MASTER = "upperBottom"
+PATCHES = {"lowerTop": "lower", "upperBottom": "upper"}   # patch: its block's cellZone
 EXACT_TOL = 1e-6
 OFFSET_TOL = 1e-3   # fraction of the penalty offset
-TEST = patchtest.PatchTest("contactPatchTest", SLAVE, MASTER, DELTA, L, EXACT_TOL, OFFSET_TOL)
+
+
+def patch_test(slave):
+    master = [p for p in PATCHES if p != slave][0]
+    return patchtest.PatchTest("contactPatchTest", slave, master, DELTA, L, EXACT_TOL,
+                               OFFSET_TOL)
 
 
 def compare(case):
     time = foamio.latest_time(case)
-    E, nu, planeStress = hertz.elastic_constants(case)
-    Eu = E if planeStress else E / (1.0 - nu * nu)     # uniaxial stress, free sides
+    slave = patchtest.slave_patch(case, time, PATCHES)
+    test = patch_test(slave)
+    mats = hertz.materials(case)
+    law = {z: mats[None] if None in mats else mats[z] for z in PATCHES.values()}
+
+    def uniaxial(E, nu, planeStress):
+        return E if planeStress else E / (1.0 - nu * nu)     # uniaxial stress, free sides
+
+    # The blocks in series, L/2 each
+    Eu = L / sum(0.5 * L / uniaxial(*law[z]) for z in PATCHES.values())
+    E, nu, planeStress = law[PATCHES[slave]]
     K = hertz.impK(E, nu, planeStress)
     exact = -Eu * DELTA / L
 
     method = hertz.read_entry(os.path.join(case, "0", "D"), "method")
     C, V = hertz.cell_centres_volumes(case)
-    Cf, area, _, h = TEST.slave_geometry(case, V)
+    Cf, area, _, h = test.slave_geometry(case, V)
     syy = patchtest.stress_tensor(case, time, V.size)[:, 1, 1]
     maxRel, spread = patchtest.uniformity(syy, exact)
 
-    res = dict(time=time, method=method, E=E, nu=nu, K=K, exact=exact, maxRel=maxRel,
-               spread=spread, h=h.tolist())
-    checks, predicted, forceTol = TEST.stress_checks(case, res, "syy", method == "penalty",
+    res = dict(time=time, method=method, E=Eu, nu=nu, K=K, exact=exact, maxRel=maxRel,
+               spread=spread, h=h.tolist(), slave=slave)
+    checks, predicted, forceTol = test.stress_checks(case, res, "syy", method == "penalty",
                                                      Eu, K, h)
     # Contact force on the slave patch
-    checks += TEST.force_checks(case, time, res, area, predicted, forceTol)
+    checks += test.force_checks(case, time, res, area, predicted, forceTol)
     patchtest.set_passed(checks)
 
     # Data for the table and the plot: the column of cells nearest x = 0.5 in
@@ -93,7 +113,7 @@ def compare(case):
     res.update(colX=C[cols, 0].tolist(), colY=C[cols, 1].tolist(), colSyy=syy[cols].tolist(),
                slaveX=Cf[:, 0].tolist())
     try:
-        TEST.master_pressure(case, time, res)
+        test.master_pressure(case, time, res)
     except (KeyError, ValueError, AttributeError):
         pass
     res["checks"] = checks
@@ -108,10 +128,12 @@ def plot(res, png):
     patchtest.plot_centre_line(a1, res, penalty, res["colSyy"], res["colY"],
                                "cells nearest x = 0.5", 0.5,
                                r"$\sigma_{yy}$ / |E $\Delta$/L|", "y [m]")
-    a2.plot(res["slaveX"], np.array(res["slaveP"]) / ex, "o", label="lowerTop (slave, 10 faces)")
+    master = patch_test(res["slave"]).master
+    a2.plot(res["slaveX"], np.array(res["slaveP"]) / ex, "o",
+            label="%s (slave, %d faces)" % (res["slave"], len(res["slaveX"])))
     if "masterX" in res:
         a2.plot(res["masterX"], np.array(res["masterP"]) / ex, "s", mfc="none",
-                label="upperBottom (master, 7 faces)")
+                label="%s (master, %d faces)" % (master, len(res["masterX"])))
     patchtest.mark_pressure(a2, res, penalty)
     a2.set_xlabel("x [m]")
     a2.set_ylabel("contact pressure / |E $\\Delta$/L|")
@@ -128,7 +150,7 @@ def main():
           % (res["time"], res["method"]))
     patchtest.print_constants(res, "sigma_yy")
     patchtest.print_stress(res, "sigma_yy", res["method"] == "penalty")
-    TEST.print_force(res)
+    patch_test(res["slave"]).print_force(res)
     print("%8s %8s %16s" % ("x", "y", "sigma_yy [Pa]"))
     for x, y, s in zip(res["colX"], res["colY"], res["colSyy"]):
         print("%8.4f %8.4f %16.9g" % (x, y, s))

@@ -216,13 +216,64 @@ def read_entry(path, key):
         return v
 
 
-def elastic_constants(case):
-    """(E, nu, planeStress) from constant/mechanicalProperties."""
-    path = os.path.join(case, "constant/mechanicalProperties")
-    E = read_entry(path, "E")
-    nu = read_entry(path, "nu")
-    ps = str(read_entry(path, "planeStress")).lower() in ("yes", "on", "true", "1")
-    return E, nu, ps
+def _with_includes(path):
+    """The text of a dictionary file with its #include "file" lines
+    replaced by the files (relative to its directory), comments removed."""
+    text = _strip(open(path).read())
+
+    def include(m):
+        return _with_includes(os.path.join(os.path.dirname(path), m.group(1)))
+
+    return re.sub(r'^\s*#include\s+"([^"]+)"', include, text, flags=re.M)
+
+
+def _entry(text, key, default=None):
+    m = re.search(r"(?:^|[\s{;])%s\s+([^\s;]+)\s*;" % re.escape(key), text)
+    if not m:
+        if default is not None:
+            return default
+        raise KeyError(key)
+    v = m.group(1)
+    try:
+        return float(v)
+    except ValueError:
+        return v
+
+
+def _sub_dict(text, key):
+    """The body of the first `key { ... }` in text (braces balanced)."""
+    m = re.search(r"(?:^|[\s{;])%s\s*\{" % re.escape(key), text)
+    if not m:
+        raise KeyError("%s not found" % key)
+    depth, i = 1, m.end()
+    while depth:
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        i += 1
+    return text[m.end():i - 1]
+
+
+def _law_constants(text):
+    ps = str(_entry(text, "planeStress", "no")).lower() in ("yes", "on", "true", "1")
+    return _entry(text, "E"), _entry(text, "nu"), ps
+
+
+def materials(case):
+    """The linear-elastic constants of constant/mechanicalProperties, as
+    {zone: (E, nu, planeStress)} for a zoned law and {None: (...)} for one
+    law of the whole mesh. #include lines are followed."""
+    text = _with_includes(os.path.join(case, "constant/mechanicalProperties"))
+    if _entry(text, "materialLaw") != "zoned":
+        return {None: _law_constants(text)}
+    coeffs = _sub_dict(text, "zonedCoeffs")
+    zones = re.findall(r"(?:^|[\s;}])(\w+)\s*\{\s*materialLaw\b", coeffs)
+    return {z: _law_constants(_sub_dict(coeffs, z)) for z in zones}
+
+
+def elastic_constants(case, zone=None):
+    """(E, nu, planeStress) from constant/mechanicalProperties: of the one
+    law, or of `zone`'s law of a zoned one."""
+    mats = materials(case)
+    return mats[None] if None in mats else mats[zone]
 
 
 def impK(E, nu, planeStress=False):

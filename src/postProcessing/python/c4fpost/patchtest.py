@@ -14,6 +14,7 @@ the checks from those numbers, and prints and plots what the two have in
 common. A check is a dict as c4fpost.report describes.
 """
 import os
+import re
 
 import numpy as np
 
@@ -30,6 +31,17 @@ def stress_tensor(case, time, ncells):
     for k, (i, j) in enumerate(_SYMM):
         S[:, i, j] = S[:, j, i] = s6[:, k]
     return S
+
+
+def slave_patch(case, time, patches):
+    """The one of `patches` whose entry in the D written at `time` says
+    master no (false): Allrun -slave may have swapped the roles."""
+    text = open(os.path.join(case, time, "D")).read()
+    for patch in patches:
+        m = re.search(r"^\s*%s\s*\{([^}]*)\}" % patch, text, flags=re.M)
+        if m and re.search(r"\bmaster\s+(no|false|off|0)\s*;", m.group(1)):
+            return patch
+    raise RuntimeError("no slave patch among %s in %s/D" % (list(patches), time))
 
 
 def uniformity(s, exact):

@@ -8,13 +8,16 @@ import json
 import os
 
 
-def parse_args(doc, png):
+def parse_args(doc, png, options=()):
     """The command line every validation script takes: the case directory,
-    --json for the regression runner, --png for the plot's file name."""
+    --json for the regression runner, --png for the plot's file name; and
+    the script's own `options`, (flag, add_argument keywords) pairs."""
     ap = argparse.ArgumentParser(description=doc.splitlines()[0])
     ap.add_argument("case", nargs="?", default=".")
     ap.add_argument("--json", help="write the checks to this file")
     ap.add_argument("--png", default=png)
+    for flag, kwargs in options:
+        ap.add_argument(flag, **kwargs)
     return ap.parse_args()
 
 

@@ -22,3 +22,9 @@ Foam::solidMaterialLaw::solidMaterialLaw
     dict_(dict),
     coeffs_(dict.subDict(lawType + "Coeffs"))
 {}
+
+
+Foam::tmp<Foam::labelField> Foam::solidMaterialLaw::cellMaterials() const
+{
+    return tmp<labelField>(new labelField(mesh_.nCells(), 0));
+}
