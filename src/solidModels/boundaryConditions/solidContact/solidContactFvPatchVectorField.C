@@ -458,6 +458,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     state.delta = 1.0/patch().deltaCoeffs();
     state.reaction = pressure_;
     state.inRange = pair_->inRange();
+    state.stiffness = state.K/state.h;
 
     // 4. The method's decision
     method_->correct(state, cond_);

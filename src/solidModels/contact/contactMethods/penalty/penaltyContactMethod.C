@@ -55,10 +55,7 @@ Foam::tmp<Foam::scalarField> Foam::contactMethods::penalty::epsN
     scalarField& eps = teps.ref();
     forAll(eps, facei)
     {
-        eps[facei] = c4f::contact::stiffnessScaledPenalty
-        (
-            scale_, state.K[facei], state.h[facei]
-        );
+        eps[facei] = scale_*state.stiffness[facei];
     }
     return teps;
 }
