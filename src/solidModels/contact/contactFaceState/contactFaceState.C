@@ -36,11 +36,12 @@ Foam::contactFaceState::contactFaceState(const contactFaceState& s)
     size_(s.size_),
     names_(s.names_),
     initial_(s.initial_),
-    dimensions_(s.dimensions_),
+    dimensions_(s.dimensions_.size()),
     fields_(s.fields_.size())
 {
     forAll(fields_, i)
     {
+        dimensions_.set(i, new dimensionSet(s.dimensions_[i]));
         fields_.set(i, new scalarField(s.fields_[i]));
     }
 }
@@ -79,7 +80,7 @@ Foam::scalarField& Foam::contactFaceState::add
     }
     names_.append(name);
     initial_.append(initial);
-    dimensions_.append(dims);
+    dimensions_.append(new dimensionSet(dims));
     fields_.append(new scalarField(size_, initial));
     return fields_.last();
 }

@@ -1,0 +1,82 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "augmentedLagrangeContactMethod.H"
+#include "addToRunTimeSelectionTable.H"
+#include "augmentedLagrangeLaw.H"
+
+namespace Foam
+{
+namespace contactMethods
+{
+    defineTypeNameAndDebug(augmentedLagrange, 0);
+    addToRunTimeSelectionTable(contactMethod, augmentedLagrange, dictionary);
+}
+}
+
+
+Foam::contactMethods::augmentedLagrange::augmentedLagrange
+(
+    const fvPatch& patch,
+    const dictionary& coeffs
+)
+:
+    uzawaMethod(patch, coeffs)
+{}
+
+
+Foam::scalar Foam::contactMethods::augmentedLagrange::newMultiplier
+(
+    const contactSlaveState& state,
+    const contactSlaveCondition& cond,
+    const label facei
+) const
+{
+    return cond.active[facei] ? state.reaction[facei] : 0;
+}
+
+
+void Foam::contactMethods::augmentedLagrange::correct
+(
+    const contactSlaveState& state,
+    contactSlaveCondition& cond
+)
+{
+    const scalarField& lam = lambda();
+
+    cond.nChanged = 0;
+
+    forAll(state.gap, facei)
+    {
+        const scalar e = eps(state, facei);
+        bool active = false;
+
+        if (state.inRange[facei])
+        {
+            // A face in contact stays so while it pushes; a free face
+            // enters when the law about its multiplier presses it
+            active =
+                cond.active[facei]
+              ? state.reaction[facei] > 0
+              : c4f::contact::augmentedLagrangePressure
+                (
+                    state.gap[facei], lam[facei], e
+                ).pressure > 0;
+        }
+
+        cond.pressure[facei] =
+            state.inRange[facei] && cond.active[facei]
+          ? state.reaction[facei]
+          : 0;
+        cond.coupled[facei] = active;
+        cond.compliance[facei] = 1/e;
+        cond.explicitPressure[facei] = active ? lam[facei] : 0;
+
+        if (active != cond.active[facei])
+        {
+            ++cond.nChanged;
+        }
+        cond.active[facei] = active;
+    }
+}

@@ -1,0 +1,137 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "constitutiveLawContactMethod.H"
+#include "addToRunTimeSelectionTable.H"
+#include "constitutiveContactLaw.H"
+#include "linearizedNormalLaw.H"
+
+namespace Foam
+{
+namespace contactMethods
+{
+    defineTypeNameAndDebug(constitutiveLaw, 0);
+    addToRunTimeSelectionTable(contactMethod, constitutiveLaw, dictionary);
+}
+}
+
+
+namespace
+{
+    Foam::scalar readRequired
+    (
+        const Foam::dictionary& coeffs,
+        const Foam::fvPatch& patch,
+        const char* name
+    )
+    {
+        if (!coeffs.found(name))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Missing entry '" << name << "' in " << coeffs.name()
+                << " (contact patch " << patch.name() << "): the law"
+                << " p_N = cN (-g_N)^n needs cN and n; "
+                << c4f::contact::describeConstitutiveLawRequirement().c_str()
+                << Foam::exit(Foam::FatalIOError);
+        }
+        return coeffs.get<Foam::scalar>(name);
+    }
+}
+
+
+Foam::contactMethods::constitutiveLaw::constitutiveLaw
+(
+    const fvPatch& patch,
+    const dictionary& coeffs
+)
+:
+    contactMethod(patch, coeffs),
+    cN_(readRequired(coeffs, patch, "cN")),
+    n_(readRequired(coeffs, patch, "n"))
+{
+    if (!c4f::contact::validConstitutiveLaw(cN_, n_))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid constitutive law cN " << cN_ << ", n " << n_
+            << " in " << coeffs.name() << " (contact patch "
+            << patch.name() << "): "
+            << (
+                   cN_ > 0 && std::isfinite(cN_)
+                 ? "entry 'n' is invalid; "
+                 : "entry 'cN' is invalid; "
+               )
+            << c4f::contact::describeConstitutiveLawRequirement().c_str()
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::contactMethods::constitutiveLaw::correct
+(
+    const contactSlaveState& state,
+    contactSlaveCondition& cond
+)
+{
+    cond.nChanged = 0;
+
+    forAll(state.gap, facei)
+    {
+        const scalar g = state.gap[facei];
+
+        bool active = false;
+        if (state.inRange[facei])
+        {
+            active = cond.active[facei] ? state.reaction[facei] > 0 : g < 0;
+        }
+
+        cond.pressure[facei] =
+            state.inRange[facei] && cond.active[facei]
+          ? state.reaction[facei]
+          : 0;
+        cond.coupled[facei] = false;
+        cond.compliance[facei] = 0;
+        cond.explicitPressure[facei] = 0;
+
+        if (active)
+        {
+            if (g < 0)
+            {
+                // The Newton step: the law's tangent at the current gap
+                const c4f::contact::LinearizedNormalLaw lin =
+                    c4f::contact::linearizeNormalLaw
+                    (
+                        c4f::contact::constitutivePressure(g, cN_, n_),
+                        g
+                    );
+                cond.coupled[facei] = lin.coupled;
+                cond.compliance[facei] = lin.compliance;
+                cond.explicitPressure[facei] = lin.pressure0;
+                active = lin.coupled || lin.pressure0 > 0;
+            }
+            else if (n_ < 1)
+            {
+                // The limit of the tangent law as g* -> 0-: the exact
+                // constraint about p0 = 0
+                cond.coupled[facei] = true;
+            }
+            else if (n_ == 1)
+            {
+                // The penalty with eps = c_N
+                cond.coupled[facei] = true;
+                cond.compliance[facei] = 1/cN_;
+            }
+            else
+            {
+                // n > 1: zero tangent and zero pressure: released
+                active = false;
+            }
+        }
+
+        if (active != cond.active[facei])
+        {
+            ++cond.nChanged;
+        }
+        cond.active[facei] = active;
+    }
+}

@@ -1,0 +1,112 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "crossConstraintContactMethod.H"
+#include "addToRunTimeSelectionTable.H"
+#include "crossConstraintLaw.H"
+#include "linearizedNormalLaw.H"
+
+namespace Foam
+{
+namespace contactMethods
+{
+    defineTypeNameAndDebug(crossConstraint, 0);
+    addToRunTimeSelectionTable(contactMethod, crossConstraint, dictionary);
+}
+}
+
+
+Foam::contactMethods::crossConstraint::crossConstraint
+(
+    const fvPatch& patch,
+    const dictionary& coeffs
+)
+:
+    uzawaMethod(patch, coeffs)
+{}
+
+
+Foam::scalar Foam::contactMethods::crossConstraint::newMultiplier
+(
+    const contactSlaveState& state,
+    const contactSlaveCondition& cond,
+    const label facei
+) const
+{
+    return
+        cond.coupled[facei]
+      ? state.reaction[facei]
+      : c4f::contact::crossConstraintPressure
+        (
+            state.gap[facei], lambda()[facei], eps(state, facei)
+        ).pressure;
+}
+
+
+void Foam::contactMethods::crossConstraint::correct
+(
+    const contactSlaveState& state,
+    contactSlaveCondition& cond
+)
+{
+    // Below this fraction of its multiplier an open face's exponential
+    // pressure is released (and the face counts as out of contact)
+    const scalar release = 1e-12;
+
+    const scalarField& lam = lambda();
+
+    cond.nChanged = 0;
+
+    forAll(state.gap, facei)
+    {
+        const scalar g = state.gap[facei];
+        const scalar e = eps(state, facei);
+        const scalar l = lam[facei];
+
+        cond.pressure[facei] =
+            state.inRange[facei] && (cond.coupled[facei] || cond.active[facei])
+          ? state.reaction[facei]
+          : 0;
+        cond.coupled[facei] = false;
+        cond.compliance[facei] = 0;
+        cond.explicitPressure[facei] = 0;
+
+        bool active = false;
+        if (state.inRange[facei])
+        {
+            if (l > 0)
+            {
+                const c4f::contact::NormalLawValue v =
+                    c4f::contact::crossConstraintPressure(g, l, e);
+                const c4f::contact::LinearizedNormalLaw lin =
+                    c4f::contact::linearizeNormalLaw(v, g);
+
+                active = v.pressure > release*l;
+                if (active && lin.coupled)
+                {
+                    cond.coupled[facei] = true;
+                    cond.compliance[facei] = lin.compliance;
+                    cond.explicitPressure[facei] = lin.pressure0;
+                }
+                else if (active)
+                {
+                    cond.explicitPressure[facei] = v.pressure;
+                }
+            }
+            else
+            {
+                // The penalty law eps <-g_N>, with the penalty's active set
+                active = cond.active[facei] ? state.reaction[facei] > 0 : g < 0;
+                cond.coupled[facei] = active;
+                cond.compliance[facei] = 1/e;
+            }
+        }
+
+        if (active != cond.active[facei])
+        {
+            ++cond.nChanged;
+        }
+        cond.active[facei] = active;
+    }
+}

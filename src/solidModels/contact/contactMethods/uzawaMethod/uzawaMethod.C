@@ -1,0 +1,114 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "uzawaMethod.H"
+#include "normalContactLaws.H"
+#include "augmentedLagrangeLaw.H"
+#include "PstreamReduceOps.H"
+
+#include <cmath>
+
+Foam::contactMethods::uzawaMethod::uzawaMethod
+(
+    const fvPatch& patch,
+    const dictionary& coeffs
+)
+:
+    contactMethod(patch, coeffs),
+    scale_(coeffs.getOrDefault<scalar>("penaltyScale", 1)),
+    penetrationTol_(coeffs.getOrDefault<scalar>("penetrationTolerance", 1e-3)),
+    multiplierTol_(coeffs.getOrDefault<scalar>("multiplierTolerance", 1e-6)),
+    maxUpdates_(coeffs.getOrDefault<label>("maxUpdates", 100)),
+    nUpdates_(0),
+    converged_(true)
+{
+    if (!c4f::contact::validPenalty(scale_))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid penaltyScale " << scale_ << " in " << coeffs.name()
+            << " (contact patch " << patch.name() << "): "
+            << c4f::contact::describePenaltyRequirement().c_str()
+            << exit(FatalIOError);
+    }
+
+    const auto positive = [&](const char* name, const scalar v)
+    {
+        if (!(v > 0 && std::isfinite(v)))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Invalid " << name << " " << v << " in " << coeffs.name()
+                << " (contact patch " << patch.name() << "): it must be"
+                << " positive and finite" << exit(FatalIOError);
+        }
+    };
+    positive("penetrationTolerance", penetrationTol_);
+    positive("multiplierTolerance", multiplierTol_);
+
+    if (maxUpdates_ < 1)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid maxUpdates " << maxUpdates_ << " in "
+            << coeffs.name() << " (contact patch " << patch.name()
+            << "): it must be at least 1" << exit(FatalIOError);
+    }
+
+    state_.add("contactMultiplier", 0, dimPressure);
+}
+
+
+void Foam::contactMethods::uzawaMethod::beginStep()
+{
+    nUpdates_ = 0;
+    converged_ = true;
+}
+
+
+bool Foam::contactMethods::uzawaMethod::updateMultipliers
+(
+    const contactSlaveState& state,
+    const contactSlaveCondition& cond
+)
+{
+    scalarField& lam = lambda();
+    scalarField lamNew(lam.size(), 0);
+
+    scalar maxPen = 0;
+    scalar dLambda = 0;
+    scalar lambdaMax = 0;
+    forAll(lam, facei)
+    {
+        if (state.inRange[facei])
+        {
+            lamNew[facei] = max(scalar(0), newMultiplier(state, cond, facei));
+            maxPen = max(maxPen, max(-state.gap[facei], scalar(0))/state.h[facei]);
+        }
+        dLambda = max(dLambda, mag(lamNew[facei] - lam[facei]));
+        lambdaMax = max(lambdaMax, mag(lamNew[facei]));
+    }
+
+    // One decision on every processor
+    reduce(maxPen, maxOp<scalar>());
+    reduce(dLambda, maxOp<scalar>());
+    reduce(lambdaMax, maxOp<scalar>());
+
+    converged_ = c4f::contact::uzawaConverged
+    (
+        maxPen, 1, penetrationTol_, dLambda, lambdaMax, multiplierTol_
+    );
+
+    Info<< "    contact " << patch_.name() << ": multiplier update "
+        << nUpdates_ << "  max <-g>/h = " << maxPen
+        << "  max|dlambda|/max|lambda| = "
+        << dLambda/max(lambdaMax, VSMALL)
+        << (converged_ ? "  converged" : "") << endl;
+
+    if (converged_ || nUpdates_ >= maxUpdates_)
+    {
+        return false;
+    }
+
+    lam = lamNew;
+    ++nUpdates_;
+    return true;
+}
