@@ -32,6 +32,23 @@ from regression import badInput  # noqa: E402
 import numpy as np  # noqa: E402
 
 PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
+
+# The closed-form checks each contact method has, per tutorial. The methods
+# themselves come from the solver's run-time selection table
+# (solidContactFoam -listMethods): a method there without an entry here
+# makes the run FAIL, so that no method goes unchecked.
+#   contactPatchTest: comparePatchTest.py (exact methods: uniform stress to
+#     1e-6; penalty: its series-spring offset; constitutiveLaw: the series
+#     solution and the penetration (sigma/cN)^(1/n), and n = 1 equal to the
+#     penalty with eps = cN);
+#   hertzCylinder: compareHertz.py (p0 within 3 %, a within 1.5 faces), with
+#     the coefficients of the tutorial's 0/D (constitutiveLaw: a stiff law).
+CHECKED_METHODS = {
+    "contactPatchTest": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
+                         "crossConstraint", "constitutiveLaw"),
+    "hertzCylinder": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
+                      "crossConstraint", "constitutiveLaw"),
+}
 WORK = os.path.join(PREFIX, "run", "tests")
 
 
@@ -72,6 +89,36 @@ def run(cmd, cwd, env=None, log=None):
     return p.returncode, p.stdout
 
 
+def list_methods():
+    """The contact methods of the solver's run-time selection table."""
+    rc, out = run(["solidContactFoam", "-listMethods"], cwd=ROOT)
+    if rc:
+        raise RuntimeError("solidContactFoam -listMethods failed:\n" + out)
+    return [m for m in out.split() if m]
+
+
+def checked_methods(res, tutorial, methods):
+    """The methods of the table that `tutorial` has a check for; every
+    other one is a FAIL (a method in the table with no closed-form check)."""
+    known = CHECKED_METHODS[tutorial]
+    for m in methods:
+        if m not in known:
+            res.add("%s_%s/closed_form_check" % (tutorial, m), False,
+                    note="method %s is in solidContactFoam -listMethods but tests/run.py has"
+                         " no closed-form check for it on %s (CHECKED_METHODS)" % (m, tutorial))
+    return [m for m in methods if m in known]
+
+
+def set_coeff(case, entry, value):
+    """Set `entry value;` (first occurrence, anchored at a line) in 0/D."""
+    d = os.path.join(case, "0/D")
+    text, n = re.subn(r"^(\s*%s\s+)[^;\s]+;" % re.escape(entry), r"\g<1>%s;" % value,
+                      open(d).read(), count=1, flags=re.M)
+    if n != 1:
+        raise RuntimeError("no entry %s in %s" % (entry, d))
+    open(d, "w").write(text)
+
+
 def fresh_copy(tutorial, name):
     dst = os.path.join(WORK, name)
     shutil.rmtree(dst, ignore_errors=True)
@@ -97,10 +144,13 @@ def unit_tests(res):
             res.add("unit/%s.%s" % (suite["name"], t["name"]), ok, note=note)
 
 
-def tutorial_case(res, tutorial, name, args=(), controls=""):
+def tutorial_case(res, tutorial, name, args=(), controls="", edit=None):
     """Run a tutorial's Allrun on a fresh copy and add its checks; controls
-    are entries added to solidMechanics of system/fvSolution."""
+    are entries added to solidMechanics of system/fvSolution, edit(case) a
+    change of the copy before it runs."""
     case = fresh_copy(tutorial, name)
+    if edit:
+        edit(case)
     if controls:
         fv = os.path.join(case, "system/fvSolution")
         text, n = re.subn(r"^(solidMechanics\s*\{)", r"\1\n    " + controls,
@@ -204,7 +254,7 @@ def contact_serial_parallel_agree(res, serial, parallel, name, tol, ref="serial"
         res.add("%s/%s_equals_%s" % (name, what, ref), err <= tol, p[col], s[col], err, tol)
 
 
-def restart_reproduces(res, finished, name):
+def restart_reproduces(res, finished, name, max_correctors=5):
     """Continue a finished one-step run for a second step at the same load:
     with the contact state written with the time (active set, pressure,
     master force, direction-mixed coefficients) it must start converged.
@@ -225,9 +275,22 @@ def restart_reproduces(res, finished, name):
         return
     first = re.findall(r"F_N = (\S+)", open(os.path.join(finished, "log.solidContactFoam")).read())[-1]
     ncorr, f1, f2 = int(steps[0][1]), float(first), float(steps[0][2])
-    res.add(name + "/correctors", ncorr <= 5, ncorr, 2, ncorr - 2, 3)
+    res.add(name + "/correctors", ncorr <= max_correctors, ncorr, 2, ncorr - 2,
+            max_correctors - 2)
     err = abs(f2 - f1) / abs(f1)
     res.add(name + "/normal_force_equals_step_1", err <= 1e-6, f2, f1, err, 1e-6)
+
+
+def stress_fields_agree(res, ref, case, name, tol):
+    """sigma of the last times of two runs, max |difference| over max |sigma|
+    of `ref`."""
+    sr = foamio.read_internal(os.path.join(ref, foamio.latest_time(ref), "sigma"))
+    sc = foamio.read_internal(os.path.join(case, foamio.latest_time(case), "sigma"))
+    if sr.shape != sc.shape:
+        res.add(name, False, note="shapes differ %s %s" % (sr.shape, sc.shape))
+        return
+    err = float(np.abs(sc - sr).max() / np.abs(sr).max())
+    res.add(name, err <= tol, err, 0.0, err, tol)
 
 
 def contact_free_agrees(res, contact):
@@ -377,11 +440,27 @@ def main():
         if os.path.exists(os.path.join(plain, "log.solidContactFoam")):
             serial_parallel_agree(res, serial, plain, "plateHolePlain/D_equals_accelerated", 1e-6)
 
+    methods = list_methods() if (want("contactPatchTest") or want("hertzCylinder")) else []
+
     if want("contactPatchTest"):
-        for method in ("lagrangeMultiplier", "penalty"):
+        cases = {}
+        for method in checked_methods(res, "contactPatchTest", methods):
             print("== contactPatchTest: non-matching interface, %s" % method, flush=True)
-            tutorial_case(res, "contactPatchTest", "contactPatchTest_" + method,
-                          ["-method", method])
+            cases[method] = tutorial_case(res, "contactPatchTest", "contactPatchTest_" + method,
+                                          ["-method", method])
+        # n = 1 is the penalty with eps = cN: eps = penaltyScale K/h of the
+        # tutorial's penalty (10 x 1e6 Pa / 0.1 m); the same stress field to
+        # 1e-6 (both stop at residual 1e-9)
+        if "constitutiveLaw" in cases and "penalty" in cases:
+            print("== contactPatchTest: constitutiveLaw n = 1 against penalty", flush=True)
+
+            def linear_law(case):
+                set_coeff(case, "cN", "1e8")
+                set_coeff(case, "n", "1")
+            lin = tutorial_case(res, "contactPatchTest", "contactPatchTest_constitutiveLaw_n1",
+                                ["-method", "constitutiveLaw"], edit=linear_law)
+            stress_fields_agree(res, cases["penalty"], lin,
+                                "contactPatchTest_constitutiveLaw_n1/sigma_equals_penalty", 1e-6)
         print("== contactPatchTest: onNonConvergence continue", flush=True)
         accept_unconverged(res)
 
@@ -403,10 +482,26 @@ def main():
 
     if want("hertzCylinder"):
         cases = {}
-        for method in ("lagrangeMultiplier", "penalty"):
+        for method in checked_methods(res, "hertzCylinder", methods):
             print("== hertzCylinder: Hertz line contact, %s" % method, flush=True)
             cases[method] = tutorial_case(res, "hertzCylinder", "hertzCylinder_" + method,
                                           ["-method", method])
+        # Augmented Lagrange on 2 processors: the multiplier decisions are
+        # reduced, so both take the same updates and agree like LM's runs;
+        # then the reconstructed case restarted in serial continues its
+        # converged step (the multipliers and the contact state survive
+        # reconstructPar): at most 3 correctors
+        print("== hertzCylinder: augmentedLagrange on 2 processors", flush=True)
+        alpar = tutorial_case(res, "hertzCylinder", "hertzCylinderParallel_augmentedLagrange",
+                              ["-method", "augmentedLagrange", "-parallel"])
+        if os.path.exists(os.path.join(alpar, "log.solidContactFoam")):
+            decomposed(res, alpar, "hertzCylinderParallel_augmentedLagrange/decomposed", 2)
+            contact_serial_parallel_agree(res, cases["augmentedLagrange"], alpar,
+                                          "hertzCylinderParallel_augmentedLagrange", 1e-6)
+            print("== hertzCylinder: serial restart of the reconstructed parallel case",
+                  flush=True)
+            restart_reproduces(res, alpar, "hertzCylinderReconstructedRestart",
+                               max_correctors=3)
         # The second mesh level (4x the cells, 46 slave faces in contact):
         # the mesh the plain iteration stalled on before the interface was
         # implicit
