@@ -33,6 +33,11 @@ error for four meshes (each level halves the cell size), the observed
 order between levels, the correctors and the wall time per level, and the
 serial/parallel wall-time ratio on the finest mesh.
 
+Uzawa (augmentedLagrange on hertzCylinder): the max penetration over h
+and the relative multiplier change per multiplier update, falling
+geometrically, and the updates and correctors for three penalty scales
+(`run.py --only uzawa` runs this part alone).
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
@@ -435,13 +440,76 @@ def plate_bench():
     print("(times include solver start-up; %d cores on this machine)" % os.cpu_count())
 
 
+UZAWA_LINE = re.compile(r"multiplier update (\d+)\s+max <-g>/h = (\S+)\s+"
+                        r"max\|dlambda\|/max\|lambda\| = (\S+)")
+
+
+def uzawa_bench():
+    """augmentedLagrange on hertzCylinder: per Uzawa update j the max
+    penetration over h and the relative multiplier change of the converged
+    inner solve (the solver's log lines), with the ratio of successive
+    penetrations (the contraction, K_c/(K_c + eps) in the model problem);
+    for penaltyScale 0.3, 1 (default) and 3 the updates, correctors and
+    wall time per step. Also written as markdown to WORK/uzawa.md."""
+    print("\n== Uzawa updates: augmentedLagrange on hertzCylinder")
+    runs = []
+    for s in ("0.3", "1", "3"):
+        def prepare(case, s=s):
+            d = os.path.join(case, "0/D")
+            text, n = re.subn(r"(augmentedLagrangeCoeffs\s*\{\s*penaltyScale\s+)[^;]+;",
+                              r"\g<1>%s;" % s, open(d).read())
+            if n != 1:
+                sys.exit("bench: no augmentedLagrangeCoeffs penaltyScale in " + d)
+            open(d, "w").write(text)
+        case = os.path.join(WORK, "uzawaSrc_s" + s)
+        shutil.rmtree(case, ignore_errors=True)
+        shutil.copytree(os.path.join(ROOT, "tutorials/hertzCylinder"), case,
+                        ignore=shutil.ignore_patterns("[1-9]*", "processor*", "log.*", "VTK",
+                                                      "postProcessing", "*.png"))
+        prepare(case)
+        r = bench_case("hertzUzawa_s" + s, case, allrun=("-method", "augmentedLagrange"))
+        log = open(os.path.join(r["case"], "log." + SOLVER)).read()
+        r["updates"] = [(int(j), float(g), float(dl)) for j, g, dl in UZAWA_LINE.findall(log)]
+        r["scale"] = s
+        runs.append(r)
+    lines = ["| penaltyScale s | converged | multiplier updates | correctors | wall per step [s] |",
+             "| --- | --- | --- | --- | --- |"]
+    for r in runs:
+        lines.append("| %s | %s | %d | %s | %.2f |" % (r["scale"], "yes" if r["converged"] else "no",
+                                                     max([u[0] for u in r["updates"]] or [0]),
+                                                     r["ncorr"], r["wall_step"]))
+    default = [r for r in runs if r["scale"] == "1"][0]
+    lines += ["", "penaltyScale 1 (default), per update j (the test after the inner correctors"
+              " converged with the multipliers of update j):", "",
+              "| j | max <-g_N>/h | ratio to j-1 | max abs(d lambda)/max lambda |",
+              "| --- | --- | --- | --- |"]
+    prev = None
+    for j, g, dl in default["updates"]:
+        lines.append("| %d | %.3e | %s | %.3e |" % (j, g, "%.3f" % (g / prev) if prev else "",
+                                                     dl))
+        prev = g
+    text = "\n".join(lines)
+    print(text)
+    with open(os.path.join(WORK, "uzawa.md"), "w") as f:
+        f.write(text + "\n")
+
+
 def main():
+    import argparse
+    ap = argparse.ArgumentParser(description="contact4foam benchmarks")
+    ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa"),
+                    help="run one part only (convergence includes hertz's runs)")
+    args = ap.parse_args()
     t0 = time.time()
     os.makedirs(WORK, exist_ok=True)
-    rows, runs = convergence_rows()
-    convergence_table(rows, runs)
-    hertz_bench(runs)
-    plate_bench()
+    if args.only in (None, "convergence", "hertz"):
+        rows, runs = convergence_rows()
+        convergence_table(rows, runs)
+        hertz_bench(runs)
+    if args.only in (None, "plate"):
+        plate_bench()
+    if args.only in (None, "uzawa"):
+        uzawa_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 
