@@ -411,7 +411,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     const solidContactFvPatchVectorField& master = shadow();
 
     const bool firstUpdate = !pair_.valid();
-    if (!pair_.valid())
+    if (firstUpdate)
     {
         if (searchDistance_ < 0)
         {

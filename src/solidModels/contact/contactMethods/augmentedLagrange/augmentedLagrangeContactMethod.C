@@ -54,15 +54,14 @@ void Foam::contactMethods::augmentedLagrange::correct
 
         if (state.inRange[facei])
         {
-            // A face in contact stays so while it pushes; a free face
-            // enters when the law about its multiplier presses it
-            active =
-                cond.active[facei]
-              ? state.reaction[facei] > 0
-              : c4f::contact::augmentedLagrangePressure
+            active = staysOrEnters
+            (
+                state, cond, facei,
+                c4f::contact::augmentedLagrangePressure
                 (
                     state.gap[facei], lam[facei], e
-                ).pressure > 0;
+                ).pressure > 0
+            );
         }
 
         cond.pressure[facei] =
@@ -73,10 +72,6 @@ void Foam::contactMethods::augmentedLagrange::correct
         cond.compliance[facei] = 1/e;
         cond.explicitPressure[facei] = active ? lam[facei] : 0;
 
-        if (active != cond.active[facei])
-        {
-            ++cond.nChanged;
-        }
-        cond.active[facei] = active;
+        cond.setActive(facei, active);
     }
 }

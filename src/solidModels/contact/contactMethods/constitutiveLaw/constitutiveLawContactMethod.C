@@ -82,7 +82,7 @@ void Foam::contactMethods::constitutiveLaw::correct
         bool active = false;
         if (state.inRange[facei])
         {
-            active = cond.active[facei] ? state.reaction[facei] > 0 : g < 0;
+            active = staysOrEnters(state, cond, facei, g < 0);
         }
 
         cond.pressure[facei] =
@@ -128,10 +128,6 @@ void Foam::contactMethods::constitutiveLaw::correct
             }
         }
 
-        if (active != cond.active[facei])
-        {
-            ++cond.nChanged;
-        }
-        cond.active[facei] = active;
+        cond.setActive(facei, active);
     }
 }

@@ -97,16 +97,12 @@ void Foam::contactMethods::crossConstraint::correct
             else
             {
                 // The penalty law eps <-g_N>, with the penalty's active set
-                active = cond.active[facei] ? state.reaction[facei] > 0 : g < 0;
+                active = staysOrEnters(state, cond, facei, g < 0);
                 cond.coupled[facei] = active;
                 cond.compliance[facei] = 1/e;
             }
         }
 
-        if (active != cond.active[facei])
-        {
-            ++cond.nChanged;
-        }
-        cond.active[facei] = active;
+        cond.setActive(facei, active);
     }
 }

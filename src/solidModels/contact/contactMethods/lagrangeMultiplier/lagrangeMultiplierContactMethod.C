@@ -57,11 +57,7 @@ void Foam::contactMethods::lagrangeMultiplier::correct
             state.inRange[facei]
          && c4f::contact::activeByPrimalDual(lambda, state.gap[facei], c);
 
-        if (active != cond.active[facei])
-        {
-            ++cond.nChanged;
-        }
-        cond.active[facei] = active;
+        cond.setActive(facei, active);
 
         cond.coupled[facei] = active;
         cond.compliance[facei] = 0;

@@ -84,17 +84,16 @@ void Foam::contactMethods::penalty::correct
         }
         else if (implicit_)
         {
-            // A face in contact stays so while it pushes; a free face
-            // enters when it penetrates
             cond.pressure[facei] =
                 cond.active[facei] ? state.reaction[facei] : 0;
-            active =
-                cond.active[facei]
-              ? cond.pressure[facei] > 0
-              : c4f::contact::penaltyPressure
+            active = staysOrEnters
+            (
+                state, cond, facei,
+                c4f::contact::penaltyPressure
                 (
                     state.gap[facei], eps[facei]
-                ).pressure > 0;
+                ).pressure > 0
+            );
 
             cond.coupled[facei] = active;
             cond.compliance[facei] = 1/eps[facei];
@@ -117,10 +116,6 @@ void Foam::contactMethods::penalty::correct
             cond.pressure[facei] = p;
         }
 
-        if (active != cond.active[facei])
-        {
-            ++cond.nChanged;
-        }
-        cond.active[facei] = active;
+        cond.setActive(facei, active);
     }
 }
