@@ -110,26 +110,14 @@ Foam::solidMaterialLaws::linearElastic::linearElastic
 Foam::tmp<Foam::volScalarField>
 Foam::solidMaterialLaws::linearElastic::impK() const
 {
-    return tmp<volScalarField>
+    return uniformField
     (
-        new volScalarField
+        "impK",
+        dimensionedScalar
         (
-            IOobject
-            (
-                "impK",
-                mesh_.time().timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh_,
-            dimensionedScalar
-            (
-                "impK",
-                dimPressure,
-                c4f::elasticity::implicitStiffness(lame_)
-            )
+            "impK",
+            dimPressure,
+            c4f::elasticity::implicitStiffness(lame_)
         )
     );
 }
@@ -154,20 +142,7 @@ Foam::solidMaterialLaws::linearElastic::sigma(const volTensorField& gradD) const
 {
     tmp<volSymmTensorField> tsigma
     (
-        new volSymmTensorField
-        (
-            IOobject
-            (
-                "sigmaLaw",
-                mesh_.time().timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh_,
-            dimensionedSymmTensor("0", dimPressure, Zero)
-        )
+        uniformField("sigmaLaw", dimensionedSymmTensor(dimPressure, Zero))
     );
     volSymmTensorField& s = tsigma.ref();
 

@@ -221,20 +221,11 @@ void Foam::solidMaterialLaws::zoned::assignLaws()
 void Foam::solidMaterialLaws::zoned::setPatchLaws()
 {
     // Across a coupled patch the neighbour's law comes with the field swap
-    volScalarField lawField
+    tmp<volScalarField> tlawField
     (
-        IOobject
-        (
-            "zonedLaw",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_,
-        dimensionedScalar(dimless, Zero)
+        uniformField("zonedLaw", dimensionedScalar(dimless, Zero))
     );
+    volScalarField& lawField = tlawField.ref();
     forAll(cellLaw_, celli)
     {
         lawField[celli] = cellLaw_[celli];
@@ -283,20 +274,7 @@ Foam::solidMaterialLaws::zoned::impK() const
 {
     tmp<volScalarField> tK
     (
-        new volScalarField
-        (
-            IOobject
-            (
-                "impK",
-                mesh_.time().timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh_,
-            dimensionedScalar("impK", dimPressure, Zero)
-        )
+        uniformField("impK", dimensionedScalar(dimPressure, Zero))
     );
     volScalarField& K = tK.ref();
 
@@ -335,20 +313,7 @@ Foam::solidMaterialLaws::zoned::sigma(const volTensorField& gradD) const
 {
     tmp<volSymmTensorField> tsigma
     (
-        new volSymmTensorField
-        (
-            IOobject
-            (
-                "sigmaLaw",
-                mesh_.time().timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh_,
-            dimensionedSymmTensor("0", dimPressure, Zero)
-        )
+        uniformField("sigmaLaw", dimensionedSymmTensor(dimPressure, Zero))
     );
     volSymmTensorField& s = tsigma.ref();
 
