@@ -27,6 +27,23 @@ double perturbedLagrangeUpdate
 }
 
 
+NormalLawValue perturbedLagrangeStepPressure
+(
+    const double gap,
+    const double lambda,
+    const double eps,
+    const double Kc
+)
+{
+    const double p = perturbedLagrangeUpdate(lambda, gap, eps, Kc);
+    if (!(p > 0))
+    {
+        return {0.0, 0.0};
+    }
+    return {p, -1.0/(1.0/Kc + 1.0/eps)};
+}
+
+
 double perturbedLagrangeResidual
 (
     const double lambda,

@@ -5,9 +5,15 @@
 // scalar spring model the step is Newton's, so its behaviour (one step
 // with the exact stiffness, the contraction factor with an estimate, the
 // penalty's fixed point, the Lagrange limit) is derived and asserted.
+// The step as a law of the gap (perturbedLagrangeStepPressure, what the
+// solver holds implicitly): its slope against central differences, its
+// linearisation, and the implicit step's contraction
+// (1/Kc)/(1/Kc + 1/eps + 1/Kt) for any true stiffness Kt, including
+// those where the explicit step diverges.
 
 #include "perturbedLagrangeLaw.H"
 #include "normalContactLaws.H"
+#include "linearizedNormalLaw.H"
 
 #include <gtest/gtest.h>
 #include <cfenv>
@@ -183,5 +189,177 @@ TEST(perturbedLagrangeLaw, degenerateInputsStayFinite)
         {
             EXPECT_GE(values[i], 0.0) << i;
         }
+    }
+}
+
+
+// The step as a law of the gap (perturbedLagrangeStepPressure), the form
+// in which the solver takes it implicitly
+
+TEST(perturbedLagrangeStep, isTheUpdateWithItsSlope)
+{
+    for (const double scale : {0.1, 1.0, 10.0, 1e3})
+    {
+        const double eps = scale*Kc, D = 1/Kc + 1/eps;
+        for (const double lambda : {0.0, 1e3, 1e6, 1e9})
+        {
+            for (const double g : {-1e-3, -1e-6, -1e-9, 0.0, 1e-9, 1e-6, 1e-3})
+            {
+                const NormalLawValue v = perturbedLagrangeStepPressure(g, lambda, eps, Kc);
+                const double p = perturbedLagrangeUpdate(lambda, g, eps, Kc);
+                EXPECT_EQ(v.pressure, p);
+                EXPECT_EQ(v.dPressureDGap, p > 0 ? -1/D : 0.0)
+                    << "eps/Kc = " << scale << ", lambda = " << lambda << ", g = " << g;
+            }
+        }
+    }
+}
+
+TEST(perturbedLagrangeStep, derivativeMatchesCentralDifferencesAwayFromRelease)
+{
+    for (const double scale : {0.1, 1.0, 10.0, 1e3})
+    {
+        const double eps = scale*Kc;
+        for (const double lambda : {0.0, 1e6, 1e9})
+        {
+            // The step reaches 0 at the release gap g_r = lambda/Kc
+            const double gr = lambda/Kc;
+            for (const double g : {-1e-4, -1e-6, -1e-8, 1e-8, 1e-6, 1e-4})
+            {
+                const double h = 1e-6*std::abs(g);
+                // Skip gaps within two steps of the kink
+                if (std::abs(g - gr) < 4*h)
+                {
+                    continue;
+                }
+                const double fd =
+                    (
+                        perturbedLagrangeStepPressure(g + h, lambda, eps, Kc).pressure
+                      - perturbedLagrangeStepPressure(g - h, lambda, eps, Kc).pressure
+                    )/(2*h);
+                const double slope =
+                    perturbedLagrangeStepPressure(g, lambda, eps, Kc).dPressureDGap;
+                EXPECT_NEAR(fd, slope, 1e-6*std::abs(1/(1/Kc + 1/eps)))
+                    << "eps/Kc = " << scale << ", lambda = " << lambda << ", g = " << g;
+            }
+        }
+    }
+}
+
+TEST(perturbedLagrangeStep, exactlyAtReleaseIsInactive)
+{
+    // lambda + (-g - lambda/eps)/(1/Kc + 1/eps) = 0 at g = lambda/Kc; with
+    // lambda = 0 that is g = 0, exactly representable
+    const NormalLawValue v = perturbedLagrangeStepPressure(0.0, 0.0, Kc, Kc);
+    EXPECT_EQ(v.pressure, 0.0);
+    EXPECT_EQ(v.dPressureDGap, 0.0);
+    // Just inside it presses, with the full slope
+    const NormalLawValue w = perturbedLagrangeStepPressure(-1e-300, 0.0, Kc, Kc);
+    EXPECT_GT(w.pressure, 0.0);
+    EXPECT_DOUBLE_EQ(w.dPressureDGap, -0.5*Kc);
+}
+
+TEST(perturbedLagrangeStep, linearizedIsSpringAboutScaledMultiplier)
+{
+    // The interface takes it as g = C (p0 - p): C = 1/Kc + 1/eps and
+    // p0 = lambda (1/Kc)/(1/Kc + 1/eps), the step at zero gap, from
+    // wherever on the active side it is linearised
+    for (const double scale : {0.1, 1.0, 10.0})
+    {
+        const double eps = scale*Kc, C = 1/Kc + 1/eps;
+        const double lambda = 3e6;
+        const double p0 = perturbedLagrangeUpdate(lambda, 0.0, eps, Kc);
+        EXPECT_NEAR(p0, lambda*(1/Kc)/C, 1e-14*lambda);
+        for (const double g : {-1e-6, -1e-9, 0.0, 1e-9})
+        {
+            const LinearizedNormalLaw lin =
+                linearizeNormalLaw(perturbedLagrangeStepPressure(g, lambda, eps, Kc), g);
+            EXPECT_TRUE(lin.coupled);
+            EXPECT_NEAR(lin.compliance, C, 1e-14*C) << scale << " " << g;
+            EXPECT_NEAR(lin.pressure0, p0, 1e-9*p0) << scale << " " << g;
+        }
+    }
+}
+
+// The implicit step on the spring model with a true stiffness Kt that the
+// estimate Kc need not match: g = g0 + p/Kt, and the step's law held
+// inside the solve, p = p0 + (-g)/C, gives
+//     p (1 + 1/(Kt C)) = p0 + (-g0)/C,   p0 = lambda (1/Kc)/C,
+// so the error of lambda <- p contracts by (1/Kc)/(C + 1/Kt) =
+// (1/Kc)/(1/Kc + 1/eps + 1/Kt), for any Kt, Kc, eps > 0.
+TEST(perturbedLagrangeStep, implicitStepConvergesForAnyEstimate)
+{
+    for (const double scale : {1.0, 10.0, 1e3})
+    {
+        // Kt/Kc: 0.05 is a face whose gap answers 20 times softer than
+        // K/h (a uniform load on a column 20 cells high), where the
+        // explicit step diverges
+        for (const double ratio : {0.05, 0.5, 1.0, 2.0})
+        {
+            const double eps = scale*Kc, Kt = ratio*Kc;
+            const double target = eps*Kt*(-g0)/(Kt + eps);
+            const double rate = (1/Kc)/(1/Kc + 1/eps + 1/Kt);
+            const double explicitRate = 1 - (1/Kt + 1/eps)/(1/Kc + 1/eps);
+            if (ratio < 0.5)
+            {
+                EXPECT_GT(std::abs(explicitRate), 1.0) << scale << " " << ratio;
+            }
+            double lambda = 0;
+            int steps = 0;
+            while (std::abs(lambda - target) > 1e-9*target && steps < 200)
+            {
+                // The inner solve: Newton on p = P(g0 + p/Kt; lambda), one
+                // step on the affine branch
+                double p = lambda;
+                for (int it = 0; it < 5; ++it)
+                {
+                    const NormalLawValue v =
+                        perturbedLagrangeStepPressure(g0 + p/Kt, lambda, eps, Kc);
+                    p -= (p - v.pressure)/(1 - v.dPressureDGap/Kt);
+                }
+                if (lambda > 0)
+                {
+                    EXPECT_NEAR((p - target)/(lambda - target), rate, 1e-6)
+                        << "eps/Kc = " << scale << ", Kt/Kc = " << ratio << ", step " << steps;
+                }
+                lambda = p;
+                ++steps;
+            }
+            EXPECT_LT(steps, 200) << scale << " " << ratio;
+            // The fixed point: the penalty's answer, the perturbed
+            // constraint satisfied
+            EXPECT_NEAR
+            (
+                perturbedLagrangeResidual(lambda, g0 + lambda/Kt, eps), 0.0,
+                1e-8*std::abs(g0)
+            );
+        }
+    }
+}
+
+TEST(perturbedLagrangeStep, degenerateInputsStayFinite)
+{
+    std::feclearexcept(FE_ALL_EXCEPT);
+    std::vector<NormalLawValue> values;
+    for (const double eps : {1e-200, 1.0, 1e12, 1e200, std::numeric_limits<double>::infinity()})
+    {
+        for (const double K : {1e-200, 1.0, 2.69e14, 1e200})
+        {
+            for (const double lambda : {-1e6, 0.0, 1e-300, 1e6, 1e12})
+            {
+                for (const double g : {-1e3, -1.0, -1e-300, -0.0, 0.0, 1e-300, 1.0, 1e3})
+                {
+                    values.push_back(perturbedLagrangeStepPressure(g, lambda, eps, K));
+                }
+            }
+        }
+    }
+    EXPECT_EQ(std::fetestexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW), 0);
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+        EXPECT_TRUE(std::isfinite(values[i].pressure)) << i;
+        EXPECT_TRUE(std::isfinite(values[i].dPressureDGap)) << i;
+        EXPECT_GE(values[i].pressure, 0.0) << i;
+        EXPECT_LE(values[i].dPressureDGap, 0.0) << i;
     }
 }
