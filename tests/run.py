@@ -38,16 +38,19 @@ PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 # (solidContactFoam -listMethods): a method there without an entry here
 # makes the run FAIL, so that no method goes unchecked.
 #   contactPatchTest: comparePatchTest.py (exact methods: uniform stress to
-#     1e-6; penalty: its series-spring offset; constitutiveLaw: the series
-#     solution and the penetration (sigma/cN)^(1/n), and n = 1 equal to the
-#     penalty with eps = cN);
+#     1e-6; penalty: its series-spring offset; perturbedLagrange: the
+#     penalty's series-spring state to 1e-6, and the penalty run's stress
+#     field to 1e-6; constitutiveLaw: the series solution and the
+#     penetration (sigma/cN)^(1/n), and n = 1 equal to the penalty with
+#     eps = cN);
 #   hertzCylinder: compareHertz.py (p0 within 3 %, a within 1.5 faces), with
-#     the coefficients of the tutorial's 0/D (constitutiveLaw: a stiff law).
+#     the coefficients of the tutorial's 0/D (constitutiveLaw: a stiff law;
+#     perturbedLagrange also the penalty run's force and peak to 1e-6).
 CHECKED_METHODS = {
     "contactPatchTest": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
-                         "crossConstraint", "constitutiveLaw"),
+                         "crossConstraint", "constitutiveLaw", "perturbedLagrange"),
     "hertzCylinder": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
-                      "crossConstraint", "constitutiveLaw"),
+                      "crossConstraint", "constitutiveLaw", "perturbedLagrange"),
 }
 WORK = os.path.join(PREFIX, "run", "tests")
 
@@ -461,6 +464,13 @@ def main():
                                 ["-method", "constitutiveLaw"], edit=linear_law)
             stress_fields_agree(res, cases["penalty"], lin,
                                 "contactPatchTest_constitutiveLaw_n1/sigma_equals_penalty", 1e-6)
+        # perturbedLagrange's answer is the penalty's with the same eps
+        # (penaltyScale 10 in both coefficient dictionaries of 0/D): the
+        # same stress field to 1e-6 (measured 4.8e-8: the multiplier
+        # tolerance's remainder)
+        if "perturbedLagrange" in cases and "penalty" in cases:
+            stress_fields_agree(res, cases["penalty"], cases["perturbedLagrange"],
+                                "contactPatchTest_perturbedLagrange/sigma_equals_penalty", 1e-6)
         print("== contactPatchTest: onNonConvergence continue", flush=True)
         accept_unconverged(res)
 
@@ -486,6 +496,11 @@ def main():
             print("== hertzCylinder: Hertz line contact, %s" % method, flush=True)
             cases[method] = tutorial_case(res, "hertzCylinder", "hertzCylinder_" + method,
                                           ["-method", method])
+        # perturbedLagrange with the penalty's eps: the penalty run's force
+        # and peak pressure (measured 4e-10 and 1.6e-8)
+        if "perturbedLagrange" in cases and "penalty" in cases:
+            contact_serial_parallel_agree(res, cases["penalty"], cases["perturbedLagrange"],
+                                          "hertzCylinder_perturbedLagrange", 1e-6, ref="penalty")
         # Augmented Lagrange on 2 processors: the multiplier decisions are
         # reduced, so both take the same updates and agree like LM's runs;
         # then the reconstructed case restarted in serial continues its

@@ -32,10 +32,11 @@ Description
         `tolerance` relative in that corrector (from the state the
         corrector started from to the state its solve gave);
       - every contact method with stored multipliers (augmented Lagrange,
-        cross-constraint) found them converged: when the three tests above
-        pass, such a method updates its multipliers (Uzawa), and while they
-        move the correctors go on from the converged state; a method that
-        reaches its maximum number of updates unconverged fails the step.
+        cross-constraint, perturbed Lagrange) found them converged: when
+        the three tests above pass, such a method updates its multipliers
+        (Uzawa), and while they move the correctors go on from the
+        converged state; a method that reaches its maximum number of
+        updates unconverged fails the step.
     The plain iteration keeps the solve's D at convergence; the
     accelerated one keeps the state the test was made at, which is a fixed
     point of the corrector to the tolerance (the traction and contact

@@ -216,6 +216,27 @@ def read_entry(path, key):
         return v
 
 
+def read_coeff(path, dict_name, key, default=None):
+    """'key value;' inside the first sub-dictionary `dict_name { ... }` of a
+    dictionary file (one level, no macros), e.g. penaltyScale of
+    perturbedLagrangeCoeffs in 0/D; `default` when the dictionary or the
+    key is absent (None: KeyError)."""
+    text = _strip(open(path).read())
+    m = re.search(r"(?:^|[\s{;])%s\s*\{([^{}]*)\}" % re.escape(dict_name), text)
+    v = None
+    if m:
+        e = re.search(r"(?:^|[\s{;])%s\s+([^\s;]+)\s*;" % re.escape(key), m.group(1))
+        v = e.group(1) if e else None
+    if v is None:
+        if default is not None:
+            return default
+        raise KeyError("%s of %s not in %s" % (key, dict_name, path))
+    try:
+        return float(v)
+    except ValueError:
+        return v
+
+
 def _with_includes(path):
     """The text of a dictionary file with its #include "file" lines
     replaced by the files (relative to its directory), comments removed."""

@@ -79,14 +79,19 @@ class PatchTest:
         cells = foamio.patch_face_cells(case, self.slave)
         return Cf, area, cells, V[cells] / area
 
-    def stress_checks(self, case, res, comp, penalty, modulus, K, h):
+    def stress_checks(self, case, res, comp, penalty, modulus, K, h, coeffs="penaltyCoeffs",
+                      default_scale=10.0, stress=None):
         """The checks on the normal stress `comp` (syy, szz) of a column of
         the given modulus, from res's exact, maxRel and spread: with
-        `penalty`, the offset that eps_N (penaltyScale from 0/D, the mean
-        over the slave cells' h) predicts and the uniformity; otherwise the
-        exact state. Adds predicted and offset (with the penalty also
-        penaltyScale and eps) to res. Returns (checks, predicted stress,
-        tolerance of the contact force)."""
+        `penalty`, the offset that eps_N (penaltyScale of the dictionary
+        `coeffs` of 0/D, default_scale where it is not given; the mean over
+        the slave cells' h) predicts and the uniformity; otherwise the
+        exact state. With `stress` (every cell's `comp`, for a method whose
+        answer is the penalty's, perturbedLagrange) the penalty state is
+        checked as an exact one: max |stress - sigma_pen|/|sigma_pen| and
+        the uniformity within exact_tol. Adds predicted and offset (with
+        the penalty also penaltyScale and eps) to res. Returns (checks,
+        predicted stress, tolerance of the contact force)."""
         maxRel, spread = res["maxRel"], res["spread"]
         units = "fraction of |sigma_exact|"
         if not penalty:
@@ -95,7 +100,8 @@ class PatchTest:
             return [dict(name="%s/%s_max_rel_error" % (self.name, comp), value=maxRel,
                          reference=0.0, error=maxRel, tolerance=self.exact_tol,
                          units=units)], predicted, self.exact_tol
-        s = hertz.read_entry(os.path.join(case, "0", "D"), "penaltyScale")
+        s = hertz.read_coeff(os.path.join(case, "0", "D"), coeffs, "penaltyScale",
+                             default_scale)
         eps = s * K / h
         if np.ptp(eps) > 1e-12 * eps.max():
             print("NOTE: the slave cells' h = V/A varies (%g .. %g); using the mean"
@@ -103,13 +109,20 @@ class PatchTest:
         eps = float(eps.mean())
         predicted = -modulus * self.delta / (self.length + modulus / eps)
         offset = 1.0 - self.length / (self.length + modulus / eps)
-        tol = self.offset_tol * offset
         res.update(penaltyScale=s, eps=eps, predicted=predicted, offset=offset)
+        uniform = dict(name="%s/%s_uniformity" % (self.name, comp), value=spread, reference=0.0,
+                       error=spread, tolerance=self.exact_tol, units=units)
+        if stress is not None:
+            rel = float(np.abs(np.asarray(stress) - predicted).max() / abs(predicted))
+            res.update(penaltyRel=rel)
+            return [dict(name="%s/%s_equals_penalty" % (self.name, comp), value=rel,
+                         reference=0.0, error=rel, tolerance=self.exact_tol,
+                         units="fraction of |sigma_pen|"), uniform], predicted, self.exact_tol
+        tol = self.offset_tol * offset
         checks = [
             dict(name="%s/%s_penalty_offset" % (self.name, comp), value=maxRel,
                  reference=offset, error=abs(maxRel - offset), tolerance=tol, units=units),
-            dict(name="%s/%s_uniformity" % (self.name, comp), value=spread, reference=0.0,
-                 error=spread, tolerance=self.exact_tol, units=units),
+            uniform,
         ]
         return checks, predicted, tol
 
@@ -159,6 +172,8 @@ def print_stress(res, stress, penalty):
         print("  penalty: scale %g, h = V/A = %g m, eps_N = %g Pa/m -> sigma = %.9g Pa,"
               " offset %.6g" % (res["penaltyScale"], np.mean(res["h"]), res["eps"],
                                 res["predicted"], res["offset"]))
+    if "penaltyRel" in res:
+        print("  max |%s - sigma_pen|/|sigma_pen| = %.4g" % (stress, res["penaltyRel"]))
     print("  max |%s - exact|/|exact| = %.4g, (max - min)/|exact| = %.4g"
           % (stress, res["maxRel"], res["spread"]))
 

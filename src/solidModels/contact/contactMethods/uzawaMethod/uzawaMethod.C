@@ -15,9 +15,23 @@ Foam::contactMethods::uzawaMethod::uzawaMethod
     const dictionary& coeffs
 )
 :
+    uzawaMethod(patch, coeffs, 1, "penetrationTolerance", "<-g>")
+{}
+
+
+Foam::contactMethods::uzawaMethod::uzawaMethod
+(
+    const fvPatch& patch,
+    const dictionary& coeffs,
+    const scalar defaultScale,
+    const word& constraintTolName,
+    const string& measureName
+)
+:
     contactMethod(patch, coeffs),
-    scale_(coeffs.getOrDefault<scalar>("penaltyScale", 1)),
-    penetrationTol_(coeffs.getOrDefault<scalar>("penetrationTolerance", 1e-3)),
+    scale_(coeffs.getOrDefault<scalar>("penaltyScale", defaultScale)),
+    measureName_(measureName),
+    constraintTol_(coeffs.getOrDefault<scalar>(constraintTolName, 1e-3)),
     multiplierTol_(coeffs.getOrDefault<scalar>("multiplierTolerance", 1e-6)),
     maxUpdates_(coeffs.getOrDefault<label>("maxUpdates", 100)),
     nUpdates_(0),
@@ -42,7 +56,7 @@ Foam::contactMethods::uzawaMethod::uzawaMethod
                 << " positive and finite" << exit(FatalIOError);
         }
     };
-    positive("penetrationTolerance", penetrationTol_);
+    positive(constraintTolName.c_str(), constraintTol_);
     positive("multiplierTolerance", multiplierTol_);
 
     if (maxUpdates_ < 1)
@@ -54,6 +68,17 @@ Foam::contactMethods::uzawaMethod::uzawaMethod
     }
 
     state_.add("contactMultiplier", 0, dimPressure);
+}
+
+
+Foam::scalar Foam::contactMethods::uzawaMethod::constraintViolation
+(
+    const contactSlaveState& state,
+    const label facei,
+    const scalar
+) const
+{
+    return max(-state.gap[facei], scalar(0));
 }
 
 
@@ -73,7 +98,7 @@ bool Foam::contactMethods::uzawaMethod::updateMultipliers
     scalarField& lam = lambda();
     scalarField lamNew(lam.size(), 0);
 
-    scalar maxPen = 0;
+    scalar maxViolation = 0;
     scalar dLambda = 0;
     scalar lambdaMax = 0;
     forAll(lam, facei)
@@ -81,24 +106,29 @@ bool Foam::contactMethods::uzawaMethod::updateMultipliers
         if (state.inRange[facei])
         {
             lamNew[facei] = max(scalar(0), newMultiplier(state, cond, facei));
-            maxPen = max(maxPen, max(-state.gap[facei], scalar(0))/state.h[facei]);
+            maxViolation = max
+            (
+                maxViolation,
+                constraintViolation(state, facei, lamNew[facei])/state.h[facei]
+            );
         }
         dLambda = max(dLambda, mag(lamNew[facei] - lam[facei]));
         lambdaMax = max(lambdaMax, mag(lamNew[facei]));
     }
 
     // One decision on every processor
-    reduce(maxPen, maxOp<scalar>());
+    reduce(maxViolation, maxOp<scalar>());
     reduce(dLambda, maxOp<scalar>());
     reduce(lambdaMax, maxOp<scalar>());
 
     converged_ = c4f::contact::uzawaConverged
     (
-        maxPen, 1, penetrationTol_, dLambda, lambdaMax, multiplierTol_
+        maxViolation, 1, constraintTol_, dLambda, lambdaMax, multiplierTol_
     );
 
     Info<< "    contact " << patch_.name() << ": multiplier update "
-        << nUpdates_ << "  max <-g>/h = " << maxPen
+        << nUpdates_ << "  max " << measureName_.c_str() << "/h = "
+        << maxViolation
         << "  max|dlambda|/max|lambda| = "
         << dLambda/max(lambdaMax, VSMALL)
         << (converged_ ? "  converged" : "") << endl;
