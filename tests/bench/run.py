@@ -38,6 +38,11 @@ and the relative multiplier change per multiplier update, falling
 geometrically, and the updates and correctors for three penalty scales
 (`run.py --only uzawa` runs this part alone).
 
+perturbedLagrange on contactPatchTest for penaltyScale 10, 100 and 1000:
+the stress error against the Lagrange multiplier answer, falling like
+1/eps, the difference to the penalty run with the same eps, and the
+multiplier updates and correctors (`run.py --only perturbedLagrange`).
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
@@ -52,6 +57,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, "src/postProcessing/python"))
 sys.path.insert(0, os.path.join(ROOT, "tutorials/plateHole/validation"))
 sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
+sys.path.insert(0, os.path.join(ROOT, "tutorials/contactPatchTest/validation"))
 
 import numpy as np  # noqa: E402
 from c4fpost import contactfree, foamio, kirsch  # noqa: E402
@@ -494,10 +500,83 @@ def uzawa_bench():
         f.write(text + "\n")
 
 
+PL_SCALES = ("10", "100", "1000")
+
+
+def perturbed_bench():
+    """perturbedLagrange on contactPatchTest for penaltyScale 10, 100 and
+    1000: the stress error against the Lagrange multiplier run (the exact
+    answer) falls like 1/eps, as the series-spring offset 1 - L/(L + E/eps)
+    predicts, and equals the penalty run's with the same eps; with the
+    multiplier updates and correctors of each, and the penalty's
+    correctors. Also written as markdown to WORK/perturbedLagrange.md."""
+    print("\n== perturbedLagrange on contactPatchTest: error against LM for three eps")
+    tut = os.path.join(ROOT, "tutorials/contactPatchTest")
+
+    def run(method, scale=None):
+        name = "patchPL_%s%s" % (method, "" if scale is None else "_s" + scale)
+        src = os.path.join(WORK, name + "Src")
+        shutil.rmtree(src, ignore_errors=True)
+        shutil.copytree(tut, src, ignore=shutil.ignore_patterns(
+            "[1-9]*", "processor*", "log.*", "VTK", "postProcessing", "*.png"))
+        if scale is not None:
+            d = os.path.join(src, "0/D")
+            text, n = re.subn(r"(%sCoeffs\s*\{\s*penaltyScale\s+)[^;]+;" % method,
+                              r"\g<1>%s;" % scale, open(d).read())
+            if n != 1:
+                sys.exit("bench: no %sCoeffs penaltyScale in %s" % (method, d))
+            open(d, "w").write(text)
+        r = bench_case(name, src, allrun=("-method", method))
+        if not r["converged"]:
+            print("  %s did not converge, see %s" % (name, r["case"]))
+            return r
+        log = open(os.path.join(r["case"], "log." + SOLVER)).read()
+        m = re.findall(r"multiplierUpdates = (\d+)", log)
+        r["updates"] = int(m[-1]) if m else None
+        sig = foamio.read_internal(os.path.join(r["case"], foamio.latest_time(r["case"]),
+                                                "sigma"))
+        r["syy"] = sig[:, 3]
+        return r
+
+    lm = run("lagrangeMultiplier")
+    if not lm["converged"]:
+        return
+    ref = lm["syy"]
+    # E/eps = h/s for the tutorial (nu = 0, K = E, slave h = V/A = 0.1 m)
+    import comparePatchTest
+    res = comparePatchTest.compare(lm["case"])
+    h, L = float(np.mean(res["h"])), comparePatchTest.L
+    lines = ["| penaltyScale s | eps = s K/h [Pa/m] | error against LM | error x s |"
+             " offset 1 - L/(L + E/eps) | difference to penalty (same eps) |"
+             " multiplier updates | correctors | penalty correctors |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for scale in PL_SCALES:
+        pl, pen = run("perturbedLagrange", scale), run("penalty", scale)
+        if not (pl["converged"] and pen["converged"]):
+            lines.append("| %s | not converged | | | | | | | |" % scale)
+            continue
+        s = float(scale)
+        err = float(np.abs(pl["syy"] - ref).max() / np.abs(ref).max())
+        diff = float(np.abs(pl["syy"] - pen["syy"]).max() / np.abs(pen["syy"]).max())
+        offset = 1.0 - L / (L + h / s)
+        lines.append("| %s | %.3g | %.4e | %.4f | %.4e | %.1e | %s | %d | %d |"
+                     % (scale, s * res["K"] / h, err, err * s, offset, diff, pl["updates"],
+                        pl["ncorr"], pen["ncorr"]))
+    lines += ["", "Error: max over the cells of abs(sigma_yy - sigma_yy,LM)/abs(sigma_yy,LM), the"
+              " Lagrange multiplier run (%d correctors) being exact to 1e-6; error x s constant"
+              " is the 1/eps fall (h/L = %g for this mesh). Difference to penalty: the same"
+              " measure against the penalty run with the same penaltyScale." % (lm["ncorr"], h / L)]
+    text = "\n".join(lines)
+    print(text)
+    with open(os.path.join(WORK, "perturbedLagrange.md"), "w") as f:
+        f.write(text + "\n")
+
+
 def main():
     import argparse
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
-    ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa"),
+    ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa",
+                                       "perturbedLagrange"),
                     help="run one part only (convergence includes hertz's runs)")
     args = ap.parse_args()
     t0 = time.time()
@@ -510,6 +589,8 @@ def main():
         plate_bench()
     if args.only in (None, "uzawa"):
         uzawa_bench()
+    if args.only in (None, "perturbedLagrange"):
+        perturbed_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 
