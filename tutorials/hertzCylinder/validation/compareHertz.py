@@ -5,7 +5,7 @@ The checks, their tolerances and where the tolerances come from live here,
 once: the tutorial prints them, the regression runner (tests/run.py) reads
 them with --json.
 
-Data (latest time, reference configuration): contactPressure on the slave
+Data (latest time or --time, reference configuration): contactPressure on the slave
 patch (cylinderContact, or blockContact after Allrun -slave block: the
 patch with `master no` in the written D; positive in compression), its
 face centres and area vectors from constant/polyMesh
@@ -108,8 +108,9 @@ def no_contact(time, wx, slave):
     return dict(time=time, checks=checks, P=0.0)
 
 
-def compare(case, estar="both"):
-    time = foamio.latest_time(case)
+def compare(case, estar="both", time=None):
+    """The comparison at `time` (a directory name; default the latest)."""
+    time = time or foamio.latest_time(case)
     slave = patchtest.slave_patch(case, time, PATCHES)
     Es, materials = contact_modulus(case, estar)
     dz = hertz.thickness(case)
@@ -160,7 +161,8 @@ def compare(case, estar="both"):
     if os.path.exists(tPath):
         tr = foamio.read_patch(tPath, slave, n)[order]
         extra["P_contactTraction"] = 2.0 * float(np.sum(np.abs(tr[:, 1]) * area)) / dz
-    rep = contactreport.last_row(case, slave)
+    rep = (contactreport.row_at(case, slave, float(time)) if time != foamio.latest_time(case)
+           else contactreport.last_row(case, slave))
     if rep and "normalForce" in rep:
         extra["P_contactReport"] = 2.0 * rep["normalForce"] / dz
         extra["report"] = rep
@@ -220,8 +222,9 @@ def plot(res, png):
 def main():
     args = report.parse_args(__doc__, "hertzPressure.png", [
         ("--estar", dict(choices=("both", "block"), default="both",
-                         help="E* of both bodies (default) or of the block alone"))])
-    res = compare(args.case, args.estar)
+                         help="E* of both bodies (default) or of the block alone")),
+        ("--time", dict(default=None, help="the time to compare (default: the latest)"))])
+    res = compare(args.case, args.estar, args.time)
     if res["P"] <= 0:
         for c in res["checks"]:
             print("FAIL %-45s (no contact)" % c["name"])
