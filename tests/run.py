@@ -42,7 +42,9 @@ PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 #     solution and the penetration (sigma/cN)^(1/n), and n = 1 equal to the
 #     penalty with eps = cN);
 #   hertzCylinder: compareHertz.py (p0 within 3 %, a within 1.5 faces), with
-#     the coefficients of the tutorial's 0/D (constitutiveLaw: a stiff law).
+#     the coefficients of the tutorial's 0/D (constitutiveLaw: a stiff law;
+#     the soft one, Allrun -law soft, is checked against Hertz with the
+#     interface law and for its spread, constitutive_law_spreads).
 CHECKED_METHODS = {
     "contactPatchTest": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
                          "crossConstraint", "constitutiveLaw"),
@@ -316,6 +318,48 @@ def contact_free_agrees(res, contact):
     serial_parallel_agree(res, contact, case, "hertzCylinderContactFree/D_equals_contact", 1e-6)
 
 
+def constitutive_law_spreads(res, stiff):
+    """hertzCylinder with the soft interface law (Allrun -method
+    constitutiveLaw -law soft): compareHertz checks it against Hertz's
+    problem with that law between the surfaces (p0 3 %, a 1.5 faces, the
+    penetration 1.5 %); here, that it spreads the pressure by what the law
+    predicts: the drop of p0 below Hertz's (for the measured load) and the
+    growth of a beyond Hertz's equal the law's to the same tolerances, and
+    the law's are at least twice those tolerances, so that an answer
+    within the stiff law's check of Hertz (p0 3 %, a 1.5 faces) fails.
+    Then both pressures against Hertz in one plot (plotLaws.py)."""
+    print("== hertzCylinder: constitutiveLaw, soft interface law", flush=True)
+    soft = tutorial_case(res, "hertzCylinder", "hertzCylinder_constitutiveLaw_soft",
+                         ["-method", "constitutiveLaw", "-law", "soft"])
+    if not os.path.exists(os.path.join(soft, "log.compareHertz")):
+        return
+    sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
+    import compareHertz
+    r = compareHertz.compare(soft)
+    law, p = r["law"], np.array(r["p"])
+    iMax = int(np.argmax(p))
+    p0H = float(compareHertz.hertz.pressure(r["x"][iMax], r["P"], compareHertz.R, r["Es"]))
+    drop = 1.0 - p[iMax] / p0H
+    dropRef = 1.0 - float(np.interp(r["x"][iMax], law["x"], law["p"])) / p0H
+    tolP = compareHertz.P0_TOL
+    res.add("hertzCylinder_constitutiveLaw_soft/p0_drop_below_hertz",
+            abs(drop - dropRef) <= tolP and dropRef >= 2 * tolP,
+            drop, dropRef, abs(drop - dropRef), tolP,
+            note="(the law's drop %.3g >= 2 x %.3g)" % (dropRef, tolP))
+    grow = r["aNum"] - r["aH"]
+    growRef = law["a"] - r["aH"]
+    tolA = compareHertz.A_TOL_FACES * r["hA"]
+    res.add("hertzCylinder_constitutiveLaw_soft/a_growth_beyond_hertz",
+            abs(grow - growRef) <= tolA and growRef >= 2 * tolA,
+            grow, growRef, abs(grow - growRef), tolA,
+            note="[m] (the law's growth %.3g m >= 2 x %.3g m)" % (growRef, tolA))
+    png = os.path.join(soft, "lawPressure.png")
+    rc, out = run(["/usr/bin/python3", os.path.join(ROOT, "tutorials/hertzCylinder/validation/plotLaws.py"),
+                   stiff, soft, "--png", png], cwd=soft, log=os.path.join(soft, "log.plotLaws"))
+    res.add("hertzCylinder_constitutiveLaw_soft/plotLaws", rc == 0 and os.path.exists(png),
+            note="(%s)" % png if rc == 0 else "rc=%d, see %s/log.plotLaws" % (rc, soft))
+
+
 def decomposed(res, case, name, nprocs):
     log = open(os.path.join(case, "log.solidContactFoam")).read()
     ok = ("nProcs : %d" % nprocs) in log and os.path.isdir(os.path.join(case, "processor1"))
@@ -505,6 +549,8 @@ def main():
                   flush=True)
             restart_reproduces(res, alpar, "hertzCylinderReconstructedRestart",
                                max_correctors=3)
+        if "constitutiveLaw" in cases:
+            constitutive_law_spreads(res, cases["constitutiveLaw"])
         # Unloading (Allrun -unload: loaded, half the approach, lifted
         # off; compareUnload.py): the contact opens, the force goes to zero,
         # the multipliers of the separating faces decay monotonically

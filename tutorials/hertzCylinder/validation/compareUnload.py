@@ -70,7 +70,6 @@ Plot (hertzUnload.png): the pressure of the two loaded states against
 Hertz, the normal force of each step, and the multipliers of the faces
 that separate, update by update.
 """
-import json
 import math
 import os
 import sys
