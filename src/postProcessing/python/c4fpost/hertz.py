@@ -162,6 +162,12 @@ def interface_law_contact(P, R, Estar, cN, n, N=400, span=2.5):
         act = new
     else:
         raise RuntimeError("interface_law_contact: the active set did not settle")
+    p = cN * w ** n
+    r = (A @ p + w + s ** 2 / (2 * R) - delta)[act]
+    if np.max(np.abs(r)) > 1e-10 * scale or abs(2 * h * p.sum() - P) > 1e-10 * P:
+        raise RuntimeError("interface_law_contact: Newton did not converge (gap residual"
+                           " %.3g m, load residual %.3g)" % (np.max(np.abs(r)),
+                                                             2 * h * p.sum() / P - 1))
     return dict(x=s, p=p, a=float(s[act].max() + h / 2), p0=float(p.max()),
                 penetration=float(w.max()), delta=float(delta))
 
