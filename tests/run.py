@@ -26,7 +26,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "src/postProcessing/python"))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 
-from c4fpost import contactfree, contactreport, foamio  # noqa: E402
+from c4fpost import contactfree, contactreport, foamio, patchtest  # noqa: E402
 from regression import badInput  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -45,12 +45,19 @@ PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 #     eps = cN);
 #   hertzCylinder: compareHertz.py (p0 within 3 %, a within 1.5 faces), with
 #     the coefficients of the tutorial's 0/D (constitutiveLaw: a stiff law;
-#     perturbedLagrange also the penalty run's force and peak to 1e-6).
+#     perturbedLagrange also the penalty run's force and peak to 1e-6;
+#     the soft one, Allrun -law soft, is checked against Hertz with the
+#     interface law and for its spread, constitutive_law_spreads).
+#   contactPatchTest3D: comparePatchTest3D.py, by the kind of answer each
+#     method gives (c4fpost.patchtest.METHOD_CHECKS: exact to 1e-6, the
+#     penalty's series-spring offset, the constitutive law's series
+#     solution and penetration); its list is that table's.
 CHECKED_METHODS = {
     "contactPatchTest": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
                          "crossConstraint", "constitutiveLaw", "perturbedLagrange"),
     "hertzCylinder": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
                       "crossConstraint", "constitutiveLaw", "perturbedLagrange"),
+    "contactPatchTest3D": tuple(patchtest.METHOD_CHECKS),
 }
 WORK = os.path.join(PREFIX, "run", "tests")
 
@@ -191,6 +198,9 @@ def steps_converged(res, case, name):
     ok = bool(steps) and not bad and re.search(r"^End\s*$", text, flags=re.M) is not None
     for d in (os.listdir(os.path.join(case, "postProcessing", "contactReport", "0"))
               if os.path.isdir(os.path.join(case, "postProcessing", "contactReport", "0")) else []):
+        if d.endswith("Multipliers.dat"):
+            # the multiplier updates of the steps, not a step report
+            continue
         row = contactreport.last_row(case, os.path.splitext(d)[0])
         if row is None or row.get("converged") != 1:
             ok = False
@@ -314,6 +324,48 @@ def contact_free_agrees(res, contact):
         return
     steps_converged(res, case, "hertzCylinderContactFree")
     serial_parallel_agree(res, contact, case, "hertzCylinderContactFree/D_equals_contact", 1e-6)
+
+
+def constitutive_law_spreads(res, stiff):
+    """hertzCylinder with the soft interface law (Allrun -method
+    constitutiveLaw -law soft): compareHertz checks it against Hertz's
+    problem with that law between the surfaces (p0 3 %, a 1.5 faces, the
+    penetration 1.5 %); here, that it spreads the pressure by what the law
+    predicts: the drop of p0 below Hertz's (for the measured load) and the
+    growth of a beyond Hertz's equal the law's to the same tolerances, and
+    the law's are at least twice those tolerances, so that an answer
+    within the stiff law's check of Hertz (p0 3 %, a 1.5 faces) fails.
+    Then both pressures against Hertz in one plot (plotLaws.py)."""
+    print("== hertzCylinder: constitutiveLaw, soft interface law", flush=True)
+    soft = tutorial_case(res, "hertzCylinder", "hertzCylinder_constitutiveLaw_soft",
+                         ["-method", "constitutiveLaw", "-law", "soft"])
+    if not os.path.exists(os.path.join(soft, "log.compareHertz")):
+        return
+    sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
+    import compareHertz
+    r = compareHertz.compare(soft)
+    law, p = r["law"], np.array(r["p"])
+    iMax = int(np.argmax(p))
+    p0H = float(compareHertz.hertz.pressure(r["x"][iMax], r["P"], compareHertz.R, r["Es"]))
+    drop = 1.0 - p[iMax] / p0H
+    dropRef = 1.0 - float(np.interp(r["x"][iMax], law["x"], law["p"])) / p0H
+    tolP = compareHertz.P0_TOL
+    res.add("hertzCylinder_constitutiveLaw_soft/p0_drop_below_hertz",
+            abs(drop - dropRef) <= tolP and dropRef >= 2 * tolP,
+            drop, dropRef, abs(drop - dropRef), tolP,
+            note="(the law's drop %.3g >= 2 x %.3g)" % (dropRef, tolP))
+    grow = r["aNum"] - r["aH"]
+    growRef = law["a"] - r["aH"]
+    tolA = compareHertz.A_TOL_FACES * r["hA"]
+    res.add("hertzCylinder_constitutiveLaw_soft/a_growth_beyond_hertz",
+            abs(grow - growRef) <= tolA and growRef >= 2 * tolA,
+            grow, growRef, abs(grow - growRef), tolA,
+            note="[m] (the law's growth %.3g m >= 2 x %.3g m)" % (growRef, tolA))
+    png = os.path.join(soft, "lawPressure.png")
+    rc, out = run(["/usr/bin/python3", os.path.join(ROOT, "tutorials/hertzCylinder/validation/plotLaws.py"),
+                   stiff, soft, "--png", png], cwd=soft, log=os.path.join(soft, "log.plotLaws"))
+    res.add("hertzCylinder_constitutiveLaw_soft/plotLaws", rc == 0 and os.path.exists(png),
+            note="(%s)" % png if rc == 0 else "rc=%d, see %s/log.plotLaws" % (rc, soft))
 
 
 def decomposed(res, case, name, nprocs):
@@ -443,7 +495,8 @@ def main():
         if os.path.exists(os.path.join(plain, "log.solidContactFoam")):
             serial_parallel_agree(res, serial, plain, "plateHolePlain/D_equals_accelerated", 1e-6)
 
-    methods = list_methods() if (want("contactPatchTest") or want("hertzCylinder")) else []
+    methods = (list_methods() if (want("contactPatchTest") or want("contactPatchTest3D")
+                                  or want("hertzCylinder")) else [])
 
     if want("contactPatchTest"):
         cases = {}
@@ -477,13 +530,10 @@ def main():
     if want("contactPatchTest3D"):
         # The 3D patch test with non-matching faces in both directions,
         # the normal along an axis and turned 30 degrees about (1, 2, 3),
-        # nu 0 and 0.3.
-        variants = [("lagrangeMultiplier", []), ("lagrangeMultiplier", ["-rotate"]),
-                    ("lagrangeMultiplier", ["-nu", "0.3"]),
-                    ("lagrangeMultiplier", ["-rotate", "-nu", "0.3"]),
-                    ("penalty", []), ("penalty", ["-rotate"]),
-                    ("penalty", ["-nu", "0.3"]),
-                    ("penalty", ["-rotate", "-nu", "0.3"])]
+        # nu 0 and 0.3: every method of the table (about 2 s a run)
+        variants = [(method, opts)
+                    for method in checked_methods(res, "contactPatchTest3D", methods)
+                    for opts in ([], ["-rotate"], ["-nu", "0.3"], ["-rotate", "-nu", "0.3"])]
         for method, opts in variants:
             tag = "".join(o.lstrip("-").replace(".", "") for o in opts)
             name = "contactPatchTest3D_%s%s" % (method, ("_" + tag) if tag else "")
@@ -517,6 +567,21 @@ def main():
                   flush=True)
             restart_reproduces(res, alpar, "hertzCylinderReconstructedRestart",
                                max_correctors=3)
+        if "constitutiveLaw" in cases:
+            constitutive_law_spreads(res, cases["constitutiveLaw"])
+        # Unloading (Allrun -unload: loaded, half the approach, lifted
+        # off; compareUnload.py): the contact opens, the force goes to zero,
+        # the multipliers of the separating faces decay monotonically
+        # (crossConstraint: by exp(-eps g/lambda) per update). Before the
+        # force test skipped an open contact, the lifted step never
+        # converged (its force was the residual traction, changing sign);
+        # augmentedLagrange's update line divided by a zero multiplier
+        # (a floating point exception)
+        for method in ("crossConstraint", "augmentedLagrange"):
+            if method in methods:
+                print("== hertzCylinder: -unload, %s" % method, flush=True)
+                tutorial_case(res, "hertzCylinder", "hertzCylinderUnload_" + method,
+                              ["-method", method, "-unload"])
         # The second mesh level (4x the cells, 46 slave faces in contact):
         # the mesh the plain iteration stalled on before the interface was
         # implicit

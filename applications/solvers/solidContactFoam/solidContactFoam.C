@@ -28,9 +28,11 @@ Description
         boundary conditions, the contact conditions among them, were
         updated before that solve, so the residual holds their face values;
       - no contact patch changed its active set in that corrector;
-      - the total normal force of every contact patch changed by less than
-        `tolerance` relative in that corrector (from the state the
-        corrector started from to the state its solve gave);
+      - the total normal force of every contact patch with active faces
+        changed by less than `tolerance` relative in that corrector (from
+        the state the corrector started from to the state its solve gave;
+        with none active the force is the residual traction, which the
+        residual test covers);
       - every contact method with stored multipliers (augmented Lagrange,
         cross-constraint, perturbed Lagrange) found them converged: when
         the three tests above pass, such a method updates its multipliers

@@ -79,47 +79,15 @@ def patch_test(slave):
                                OFFSET_TOL)
 
 
-def constitutive_stress(E, cN, n):
-    """|sigma| of the column with the interface law p = cN (-g)^n in series:
-    E (Delta - (sigma/cN)^(1/n))/L = sigma, by bisection on (0, E Delta/L]
-    (the left side falls and the right rises, so the root is unique)."""
-    lo, hi = 0.0, E * DELTA / L
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if E * (DELTA - (mid / cN) ** (1.0 / n)) / L > mid:
-            lo = mid
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
-
-
 def constitutive_checks(case, time, test, res, syy, E, nfaces):
     """constitutiveLaw (p = cN (-g)^n, cN and n from 0/D): the stress is
-    uniform and equals the series solution constitutive_stress, and every
-    slave face's penetration -g equals (|sigma|/cN)^(1/n) with sigma the
-    computed mean stress; all three to EXACT_TOL (the law is exact, the
-    state uniform; what is left is the outer correctors' residual). n = 1
-    is the penalty with eps = cN."""
-    d = os.path.join(case, "0", "D")
-    cN, n = hertz.read_entry(d, "cN"), hertz.read_entry(d, "n")
-    predicted = -constitutive_stress(E, cN, n)
-    maxRel, spread = patchtest.uniformity(syy, predicted)
-    gap = foamio.read_patch(os.path.join(case, time, "contactGap"), test.slave, nfaces)
-    pen = -np.asarray(gap)
-    ref = (abs(float(syy.mean())) / cN) ** (1.0 / n)
-    perr = float(np.abs(pen - ref).max() / ref)
-    res.update(predicted=predicted, offset=1.0 - predicted / res["exact"], cN=cN, n=n, maxRel=maxRel,
-               penetration=float(pen.mean()), penetrationRef=ref)
-    units = "fraction of |sigma_pred|"
-    checks = [
-        dict(name="%s/syy_constitutive_law" % test.name, value=maxRel, reference=0.0,
-             error=maxRel, tolerance=EXACT_TOL, units=units),
-        dict(name="%s/syy_uniformity" % test.name, value=spread, reference=0.0,
-             error=spread, tolerance=EXACT_TOL, units=units),
-        dict(name="%s/penetration_law" % test.name, value=float(pen.mean()), reference=ref,
-             error=perr, tolerance=EXACT_TOL, units="fraction of (sigma/cN)^(1/n)"),
-    ]
-    return checks, predicted, EXACT_TOL
+    uniform and equals the series solution
+    E (Delta - (sigma/cN)^(1/n))/L = sigma, and every slave face's
+    penetration -g equals (|sigma|/cN)^(1/n) with sigma the computed mean
+    stress; all three to EXACT_TOL (the law is exact, the state uniform;
+    what is left is the outer correctors' residual). n = 1 is the penalty
+    with eps = cN. (c4fpost.patchtest, shared with contactPatchTest3D.)"""
+    return test.constitutive_checks(case, time, res, "syy", syy, E, nfaces)
 
 
 def compare(case):

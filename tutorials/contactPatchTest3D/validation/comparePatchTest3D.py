@@ -38,7 +38,15 @@ Checks (all variants):
     log.solidContactFoam has no NOT CONVERGED and r below the solver's
     `tolerance` (solidMechanics in system/fvSolution); value r.
 
-lagrangeMultiplier (the gap is closed exactly) and -noContact (the two
+The check of each contact method follows from the answer it gives
+(c4fpost.patchtest.METHOD_CHECKS: exact, penalty or constitutive); a
+method of solidContactFoam -listMethods with no entry there fails
+(`method_check`).
+
+The exact methods (lagrangeMultiplier; augmentedLagrange and
+crossConstraint, which close the gap through their multiplier updates to
+multiplierTolerance 1e-6: the penetration left is 1e-6 of lambda/eps, some
+1e-7 of Delta) and -noContact (the two
 bodies decoupled, each contact patch given the exact state the contact run
 must converge to: the slave its normal displacement R (0 0 -0.005), the
 master the pressure E Delta/L), max over ALL cells of
@@ -66,6 +74,14 @@ does not slide (the contact is frictionless anyway). Checks:
 to the same 1e-6 as above, 1e-4 of the ~1e-2 offset; the 2D patch test
 meets its prediction to 1e-3 of itself) and
 (max - min sigma'_zz)/|sigma_exact| <= 1e-6.
+
+constitutiveLaw (p = cN (-g)^n, cN and n of constitutiveLawCoeffs in 0/D):
+the interface is in series with the column, the state uniform with
+    |sigma| L/E + (|sigma|/cN)^(1/n) = Delta
+(the modulus E: uniaxial stress, as for the penalty), every slave face
+penetrating by (|sigma|/cN)^(1/n); the stress against that everywhere, its
+spread and every face's penetration against the law, all to 1e-6 (the law
+is exact and the state uniform, as the 2D patch test checks it).
 
 Contact variants, also: the total normal force on the slave patch,
 sum_f p_f |Sf_f|, against |sigma| (exact or penalty) times the patch area
@@ -176,20 +192,42 @@ def convergence_check(case):
                 % (step["time"], step["correctors"])), step, ncorr
 
 
+def kind_of(contact, method):
+    """The kind of answer to check (patchtest.METHOD_CHECKS): exact without
+    contact; None for a method with no check."""
+    if not contact:
+        return "exact"
+    check = patchtest.method_check(method)
+    return check["kind"] if check else None
+
+
+def no_check(method):
+    """A method of the run-time selection table with no closed-form check
+    here: a FAIL that says so."""
+    return dict(name=NAME + "/closed_form_check", value=float("inf"), reference=0.0,
+                error=float("inf"), tolerance=0.0, passed=False,
+                units="method %s has no entry in c4fpost.patchtest.METHOD_CHECKS" % method)
+
+
 def no_result(case, contact, method, why):
     """No time written (a step that does not converge stops the solver
     before writing): every stress check fails."""
     inf = float("inf")
     conv, step, ncorr = convergence_check(case)
-    if contact and method == "penalty":
+    kind = kind_of(contact, method)
+    if kind == "penalty":
         names = ["szz_penalty_offset", "szz_uniformity"]
+    elif kind == "constitutive":
+        names = ["szz_constitutive_law", "szz_uniformity", "penetration_law"]
     else:
         names = ["szz_max_rel_error"]
     checks = [dict(name="%s/%s" % (NAME, n), value=inf, reference=0.0, error=inf,
                    tolerance=EXACT_TOL, units=why, passed=False)
               for n in names + ["other_components"]]
     checks.append(conv)
-    return dict(time=None, method=method, contact=contact, why=why, step=step,
+    if kind is None:
+        checks.append(no_check(method))
+    return dict(time=None, method=method, contact=contact, kind=kind, why=why, step=step,
                 nCorrectors=ncorr, checks=checks)
 
 
@@ -223,15 +261,25 @@ def compare(case):
     d0 = R @ np.array([0.0, 0.0, -DELTA])
     loadErr = float(np.linalg.norm(d - d0) / DELTA)
 
-    res = dict(time=time, method=method, contact=contact, E=E, nu=nu, K=K, exact=exact,
+    kind = kind_of(contact, method)
+    res = dict(time=time, method=method, contact=contact, kind=kind, E=E, nu=nu, K=K,
+               exact=exact,
                maxRel=maxRel, spread=spread, others=others, R=R.tolist(),
                rotated=bool(np.abs(R - np.eye(3)).max() > 1e-6), h=h.tolist(),
                topDisplacement=d.tolist())
     checks = [dict(name=NAME + "/load_direction", value=float(np.linalg.norm(d)),
                    reference=DELTA, error=loadErr, tolerance=LOAD_TOL,
                    units="m (error: |D_top - R (0 0 -Delta)|/Delta)")]
-    stress, predicted, forceTol = TEST.stress_checks(case, res, "szz",
-                                                     contact and method == "penalty", E, K, h)
+    if kind is None:
+        checks.append(no_check(method))
+        stress, predicted, forceTol = TEST.stress_checks(case, res, "szz", False, E, K, h)
+    elif kind == "constitutive":
+        stress, predicted, forceTol = TEST.constitutive_checks(case, time, res, "szz", szz, E,
+                                                               Cf.shape[0], method)
+    else:
+        stress, predicted, forceTol = TEST.stress_checks(
+            case, res, "szz", kind == "penalty", E, K, h, method,
+            patchtest.method_check(method).get("scale") if contact else None)
     checks += stress
     checks.append(dict(name=NAME + "/other_components", value=others[worst], reference=0.0,
                        error=others[worst], tolerance=EXACT_TOL,
@@ -271,13 +319,16 @@ def compare(case):
 def plot(res, png):
     plt = patchtest.pyplot()
     ex = abs(res["exact"])
-    penalty = res["contact"] and res["method"] == "penalty"
+    # the predicted stress where it is not the exact one
+    penalty = res["kind"] in ("penalty", "constitutive")
+    label = ("series prediction (interface law)" if res["kind"] == "constitutive"
+             else "penalty prediction")
     what = "%s%s, nu = %g" % (res["method"] if res["contact"] else "no contact",
                                ", rotated" if res["rotated"] else "", res["nu"])
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
     patchtest.plot_centre_line(a1, res, penalty, res["colSzz"], res["colZ"],
                                "cells nearest x' = y' = 0.5", 0.0,
-                               r"$\sigma'_{zz}$ / |E $\Delta$/L|", "z' [m]")
+                               r"$\sigma'_{zz}$ / |E $\Delta$/L|", "z' [m]", label)
     a2.plot(res["slaveCellX"], np.array(res["slaveCellSzz"]) / -ex, "o", ms=4,
             label=r"$-\sigma'_{zz}$, upper cells on %s (slave, 10 x 8)" % SLAVE)
     a2.plot(res["masterCellX"], np.array(res["masterCellSzz"]) / -ex, "s", ms=7, mfc="none",
@@ -287,7 +338,7 @@ def plot(res, png):
                 label="contact pressure, %s faces" % SLAVE)
         a2.plot(res["masterX"], np.array(res["masterP"]) / ex, "+", ms=9,
                 label="contact pressure, %s faces" % MASTER)
-    patchtest.mark_pressure(a2, res, penalty)
+    patchtest.mark_pressure(a2, res, penalty, label)
     a2.set_xlabel("x' [m] (all y')")
     a2.set_ylabel("/ |E $\\Delta$/L|")
     a2.set_title("at the interface (%s)" % what)
@@ -325,7 +376,12 @@ def main():
         # no "-0.0000000000" for round-off
         print("    %14.10f %14.10f %14.10f" % tuple(v if abs(v) > 5e-11 else 0.0 for v in row))
     print("  top displacement (0/D): (%.10g %.10g %.10g)" % tuple(res["topDisplacement"]))
-    patchtest.print_stress(res, "sigma'_zz", res["contact"] and res["method"] == "penalty")
+    patchtest.print_stress(res, "sigma'_zz", res["kind"] == "penalty")
+    if res["kind"] == "constitutive":
+        print("  constitutive law cN = %g, n = %g: sigma = %.9g Pa, penetration %.9g m"
+              " (expected (sigma/cN)^(1/n) = %.9g m)"
+              % (res["cN"], res["n"], res["predicted"], res["penetration"],
+                 res["penetrationRef"]))
     print("  max |sigma'_ij|/|exact|: " + ", ".join("%s %.3g" % kv for kv in res["others"].items()))
     if res["contact"]:
         TEST.print_force(res)

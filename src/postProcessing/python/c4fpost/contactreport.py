@@ -4,7 +4,7 @@ import os
 
 COLUMNS = ["time", "normalForce", "tangentialForce", "contactArea",
            "maxPressure", "maxPenetration", "activeFaces", "outerCorrectors",
-           "converged"]
+           "converged", "multiplierUpdates"]
 
 
 def _start_time_key(name):
@@ -14,18 +14,20 @@ def _start_time_key(name):
         return -1.0
 
 
-def last_row(case, patch):
-    """The last row of the slave patch's report as a dict keyed by the
-    column names of the '#' header (COLUMNS where there is none), taking
-    the latest start-time directory last; None where there is no report."""
+def rows(case, patch):
+    """Every row of the slave patch's report, as dicts keyed by the column
+    names of the '#' header (COLUMNS where there is none), in file order,
+    the start-time directories in time order (a restart's rows after the
+    run's it continues); [] where there is no report."""
     base = os.path.join(case, "postProcessing", "contactReport")
     if not os.path.isdir(base):
-        return None
-    names, row = None, None
+        return []
+    out = []
     for d in sorted(os.listdir(base), key=_start_time_key):
         path = os.path.join(base, d, patch + ".dat")
         if not os.path.exists(path):
             continue
+        names = None
         for line in open(path):
             s = line.strip()
             if not s:
@@ -34,14 +36,57 @@ def last_row(case, patch):
                 words = s.lstrip("#").split()
                 if "normalForce" in words:
                     names = words
-            else:
-                row = s.split()
-    if row is None:
-        return None
-    out = {}
-    for k, v in zip(names or COLUMNS, row):
-        try:
-            out[k] = float(v)
-        except ValueError:
-            pass
+                continue
+            row = {}
+            for k, v in zip(names or COLUMNS, s.split()):
+                try:
+                    row[k] = float(v)
+                except ValueError:
+                    pass
+            out.append(row)
     return out
+
+
+def last_row(case, patch):
+    """The last row of the slave patch's report (rows()), None where there
+    is no report."""
+    r = rows(case, patch)
+    return r[-1] if r else None
+
+
+def row_at(case, patch, time):
+    """The last row of the slave patch's report at `time` (a float), None
+    where there is none."""
+    r = [x for x in rows(case, patch) if abs(x.get("time", float("nan")) - time)
+         <= 1e-9 * max(1.0, abs(time))]
+    return r[-1] if r else None
+
+
+def multipliers(case, patch):
+    """The multiplier updates contactReport wrote for a method with stored
+    multipliers (<patch>Multipliers.dat): a dict of numpy arrays keyed by
+    the column names (time, update, x, y, z, gap, pressure, multiplier),
+    one entry per face and update; None where there is no such file."""
+    import numpy as np
+    base = os.path.join(case, "postProcessing", "contactReport")
+    if not os.path.isdir(base):
+        return None
+    names, data = None, []
+    for d in sorted(os.listdir(base), key=_start_time_key):
+        path = os.path.join(base, d, patch + "Multipliers.dat")
+        if not os.path.exists(path):
+            continue
+        for line in open(path):
+            s = line.strip()
+            if not s:
+                continue
+            if s.startswith("#"):
+                words = s.lstrip("#").split()
+                if "multiplier" in words:
+                    names = words
+                continue
+            data.append([float(v) for v in s.split()])
+    if not data or names is None:
+        return None
+    a = np.array(data)
+    return {k: a[:, i] for i, k in enumerate(names)}

@@ -80,6 +80,98 @@ def cylinder_compression(P, R, E, nu, a):
     return P * (1.0 - nu ** 2) / (math.pi * E) * (2.0 * math.log(4.0 * R / a) - 1.0)
 
 
+def _log_strip(x, s0, s1):
+    """The integral of ln|x - s| over s0 <= s <= s1 (u ln|u| - u)."""
+    def F(u):
+        au = np.abs(u)
+        return np.where(au > 0, u * np.log(np.where(au > 0, au, 1.0)) - u, 0.0)
+    return F(x - s0) - F(x - s1)
+
+
+def interface_law_contact(P, R, Estar, cN, n, N=400, span=2.5):
+    """Line contact of a cylinder on a flat as Hertz's, with an interface
+    law p = cN w^n between the surfaces (w >= 0 the interface's
+    compression, contact4foam's constitutiveLaw, Wriggers 2006 eq. 2.20):
+    the reference solution of hertzCylinder with that law, for the load P'
+    per unit length (full strip).
+
+    Each surface is an elastic half-plane (plane strain; the two bodies in
+    one through E*): under a pressure p(s) the surfaces move apart by
+    -(2/(pi E*)) int p(s) ln|x - s| ds + const (Johnson 1985, eq. 2.25a
+    for each body). Inside the contact the gap of the surfaces is closed
+    by the interface's compression,
+
+        x^2/(2R) - delta - (2/(pi E*)) int p(s) ln|x - s| ds + w(x) = 0,
+        p = cN w^n,   int p dx = P',
+
+    outside p = 0 and the gap is positive. Discretised with a uniform
+    pressure on N strips of x in [0, span a_Hertz] (mirrored: p is even),
+    the strips' influence integrated exactly; Newton on (w, delta) over
+    the active strips, which an outer loop updates (drop w <= 0, add a
+    negative gap) until it holds still. cN -> inf is Hertz; n = 1 a
+    Winkler layer in series with the half-planes.
+
+    Returns a dict: x (the strip centres), p, a (the outer edge of the last
+    active strip; resolution span a_Hertz/N), p0 (max p), penetration
+    (max w, = (p0/cN)^(1/n)) and delta (the approach, up to the constant
+    of the two-dimensional half-plane)."""
+    aH = half_width(P, R, Estar)
+    xmax = span * aH
+    h = xmax / N
+    s = h * (np.arange(N) + 0.5)
+    lo, hi = s - h / 2, s + h / 2
+    c = 2.0 / (math.pi * Estar)
+    # displacement at s_i of a unit pressure on strip j and on its mirror
+    A = -c * (_log_strip(s[:, None], lo[None, :], hi[None, :])
+              + _log_strip(s[:, None], -hi[None, :], -lo[None, :]))
+    act = s < aH
+    # start from the Hertz pressure carried by the interface alone
+    w = np.where(act, (np.maximum(pressure(s, P, R, Estar), 1.0) / cN) ** (1.0 / n), 0.0)
+    delta = float(np.max(A @ (cN * w ** n) + w + s ** 2 / (2 * R)))
+    scale = xmax ** 2 / (2 * R)
+    for _ in range(100):
+        ia = np.nonzero(act)[0]
+        for _ in range(100):
+            p = cN * w ** n
+            r = (A @ p + w + s ** 2 / (2 * R) - delta)[ia]
+            rl = 2 * h * p.sum() - P
+            dp = cN * n * w[ia] ** (n - 1)
+            J = np.zeros((ia.size + 1, ia.size + 1))
+            J[:-1, :-1] = A[np.ix_(ia, ia)] * dp[None, :] + np.eye(ia.size)
+            J[:-1, -1] = -1.0
+            J[-1, :-1] = 2 * h * dp
+            d = np.linalg.solve(J, -np.concatenate([r, [rl]]))
+            # no step takes a compression below zero (damped where it would)
+            t = 1.0
+            down = d[:-1] < 0
+            if np.any(down):
+                t = min(1.0, float(np.min(-w[ia][down] / d[:-1][down])))
+            t = min(max(t, 1e-2), 1.0)
+            w[ia] = np.maximum(w[ia] + t * d[:-1], 0.0)
+            delta += t * d[-1]
+            if t == 1.0 and np.max(np.abs(r)) <= 1e-13 * scale and abs(rl) <= 1e-12 * P:
+                break
+        p = cN * w ** n
+        gap = A @ p + s ** 2 / (2 * R) - delta
+        new = act.copy()
+        new[act & (w <= 0)] = False
+        new[~act & (gap < 0)] = True
+        if np.array_equal(new, act):
+            break
+        w[new & ~act] = (1e-6 * P / xmax / cN) ** (1.0 / n)
+        act = new
+    else:
+        raise RuntimeError("interface_law_contact: the active set did not settle")
+    p = cN * w ** n
+    r = (A @ p + w + s ** 2 / (2 * R) - delta)[act]
+    if np.max(np.abs(r)) > 1e-10 * scale or abs(2 * h * p.sum() - P) > 1e-10 * P:
+        raise RuntimeError("interface_law_contact: Newton did not converge (gap residual"
+                           " %.3g m, load residual %.3g)" % (np.max(np.abs(r)),
+                                                             2 * h * p.sum() / P - 1))
+    return dict(x=s, p=p, a=float(s[act].max() + h / 2), p0=float(p.max()),
+                penetration=float(w.max()), delta=float(delta))
+
+
 # --------------------------------------------------------------------------
 # polyMesh geometry (ASCII)
 
@@ -338,6 +430,19 @@ def _self_test():
     Cf, Sf = face_geometry(pts, np.arange(4))
     check("square face area", float(Sf[2]), 1.0, 1e-15)
     check("square face centre x", float(Cf[0]), 0.5, 1e-15)
+    # the interface law: a stiff one is Hertz (p0 to the strips' resolution,
+    # a to 1.5 strips), a soft one spreads, and every one carries P' with the
+    # penetration its law gives at p0
+    stiff = interface_law_contact(3.5e7, R, Es, 1e22, 2)
+    check("stiff interface law p0 / Hertz", stiff["p0"] / p0, 1.0, 1e-3)
+    check("stiff interface law a / Hertz", stiff["a"] / a, 1.0, 1.5 * 2.5 / 400)
+    soft = interface_law_contact(3.5e7, R, Es, 1e17, 2)
+    dx = soft["x"][1] - soft["x"][0]
+    check("soft interface law load / P'", 2 * dx * soft["p"].sum() / 3.5e7, 1.0, 1e-10)
+    check("soft interface law penetration", soft["penetration"],
+          (soft["p0"] / 1e17) ** 0.5, 1e-12)
+    check("soft interface law p0 below Hertz", float(soft["p0"] < 0.9 * p0), 1.0, 0.0)
+    check("soft interface law a beyond Hertz", float(soft["a"] > 1.3 * a), 1.0, 0.0)
     check("K(E=1, nu=0)", impK(1.0, 0.0), 1.0, 1e-15)
     check("K(E=1, nu=0.3), plane strain", impK(1.0, 0.3), 0.7 / (1.3 * 0.4), 1e-15)
     return ok

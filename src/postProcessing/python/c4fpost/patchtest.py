@@ -8,10 +8,20 @@ is in series with the column, and the state is uniform too, with
 (K = 2 mu + lambda, h = V/A of the slave face cells), so every cell's
 relative error is the offset 1 - L/(L + E/eps_N).
 
+With the constitutive interface law p = cN (-g)^n in series the state is
+uniform as well: |sigma| L/E + (|sigma|/cN)^(1/n) = Delta
+(constitutive_stress), and every slave face penetrates by (|sigma|/cN)^(1/n).
+
 The validation scripts keep the constants of their case and the tolerances,
 with where the tolerances come from; this module reads the fields, builds
 the checks from those numbers, and prints and plots what the two have in
 common. A check is a dict as c4fpost.report describes.
+
+METHOD_CHECKS says which of these answers each contact method gives, so
+that a patch test knows how to check it: a method of solidContactFoam
+-listMethods with no entry here has no check (contactPatchTest3D fails it,
+and tests/run.py takes its list of 3D methods from here). Adding a method
+is one entry.
 """
 import os
 import re
@@ -22,6 +32,53 @@ from c4fpost import contactreport, foamio, hertz
 
 # symmTensor order in OpenFOAM files: xx xy xz yy yz zz
 _SYMM = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
+
+# The patch-test answer of each contact method:
+#   exact         the gap closes: the exact uniform stress (to the scripts'
+#                 EXACT_TOL, 1e-6); the multiplier methods reach it through
+#                 their Uzawa updates (multiplierTolerance 1e-6)
+#   penalty       the series-spring offset with eps = scale K/h, the scale
+#                 the entry `scale` of the method's <method>Coeffs
+#   constitutive  the series solution with the law p = cN (-g)^n (cN, n of
+#                 the method's <method>Coeffs) and its uniform penetration
+# (a perturbed Lagrange multiplier, lambda = eps g, would be
+# dict(kind="penalty", scale=<its scale entry>): for the same eps it is
+# the penalty's state)
+METHOD_CHECKS = {
+    "lagrangeMultiplier": dict(kind="exact"),
+    "augmentedLagrange": dict(kind="exact"),
+    "crossConstraint": dict(kind="exact"),
+    "penalty": dict(kind="penalty", scale="penaltyScale"),
+    "constitutiveLaw": dict(kind="constitutive"),
+    "perturbedLagrange": dict(kind="penalty", scale="penaltyScale"),
+}
+
+
+def method_check(method):
+    """METHOD_CHECKS' entry of a method, None where it has none."""
+    return METHOD_CHECKS.get(method)
+
+
+def method_coeff(case, method, entry):
+    """A scalar entry of <method>Coeffs in 0/D."""
+    text = hertz._strip(open(os.path.join(case, "0", "D")).read())
+    return float(hertz._entry(hertz._sub_dict(text, method + "Coeffs"), entry))
+
+
+def constitutive_stress(modulus, delta, length, cN, n):
+    """|sigma| of a column (modulus, length) shortened by delta with the
+    interface law p = cN (-g)^n in series:
+        modulus (delta - (sigma/cN)^(1/n))/length = sigma,
+    by bisection on (0, modulus delta/length] (the left side falls and the
+    right rises, so the root is unique)."""
+    lo, hi = 0.0, modulus * delta / length
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if modulus * (delta - (mid / cN) ** (1.0 / n)) / length > mid:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
 
 
 def stress_tensor(case, time, ncells):
@@ -79,18 +136,20 @@ class PatchTest:
         cells = foamio.patch_face_cells(case, self.slave)
         return Cf, area, cells, V[cells] / area
 
-    def stress_checks(self, case, res, comp, penalty, modulus, K, h, coeffs="penaltyCoeffs",
-                      default_scale=10.0, stress=None):
+    def stress_checks(self, case, res, comp, penalty, modulus, K, h, method=None,
+                      scale="penaltyScale", coeffs="penaltyCoeffs", default_scale=10.0,
+                      stress=None):
         """The checks on the normal stress `comp` (syy, szz) of a column of
         the given modulus, from res's exact, maxRel and spread: with
-        `penalty`, the offset that eps_N (penaltyScale of the dictionary
-        `coeffs` of 0/D, default_scale where it is not given; the mean over
-        the slave cells' h) predicts and the uniformity; otherwise the
-        exact state. With `stress` (every cell's `comp`, for a method whose
-        answer is the penalty's, perturbedLagrange) the penalty state is
-        checked as an exact one: max |stress - sigma_pen|/|sigma_pen| and
-        the uniformity within exact_tol. Adds predicted and offset (with
-        the penalty also penaltyScale and eps) to res. Returns (checks,
+        `penalty`, the offset that eps_N predicts (the entry `scale` of
+        <method>Coeffs in 0/D with a method, otherwise penaltyScale of the
+        dictionary `coeffs`; default_scale where it is not given; the mean
+        over the slave cells' h) and the uniformity; otherwise the exact
+        state. With `stress` (every cell's `comp`, for a method whose answer
+        is the penalty's, perturbedLagrange) the penalty state is checked as
+        an exact one: max |stress - sigma_pen|/|sigma_pen| and the
+        uniformity within exact_tol. Adds predicted and offset (with the
+        penalty also penaltyScale and eps) to res. Returns (checks,
         predicted stress, tolerance of the contact force)."""
         maxRel, spread = res["maxRel"], res["spread"]
         units = "fraction of |sigma_exact|"
@@ -100,8 +159,10 @@ class PatchTest:
             return [dict(name="%s/%s_max_rel_error" % (self.name, comp), value=maxRel,
                          reference=0.0, error=maxRel, tolerance=self.exact_tol,
                          units=units)], predicted, self.exact_tol
-        s = hertz.read_coeff(os.path.join(case, "0", "D"), coeffs, "penaltyScale",
-                             default_scale)
+        s = (hertz.read_coeff(os.path.join(case, "0", "D"), method + "Coeffs", scale,
+                              default_scale) if method
+             else hertz.read_coeff(os.path.join(case, "0", "D"), coeffs, "penaltyScale",
+                                   default_scale))
         eps = s * K / h
         if np.ptp(eps) > 1e-12 * eps.max():
             print("NOTE: the slave cells' h = V/A varies (%g .. %g); using the mean"
@@ -125,6 +186,38 @@ class PatchTest:
             uniform,
         ]
         return checks, predicted, tol
+
+    def constitutive_checks(self, case, time, res, comp, stress, modulus, nfaces,
+                            method="constitutiveLaw"):
+        """The checks of a column with the interface law p = cN (-g)^n (cN
+        and n of <method>Coeffs in 0/D): the normal stress `comp` (the cells'
+        `stress`) equals constitutive_stress everywhere and is uniform, and
+        every slave face's penetration -g (contactGap) equals
+        (|sigma|/cN)^(1/n) with sigma the computed mean stress; all three to
+        exact_tol (the law is exact and the state uniform; what is left is
+        the outer correctors' residual). Adds predicted, offset, cN, n,
+        maxRel, penetration and penetrationRef to res; returns (checks,
+        predicted stress, tolerance of the contact force)."""
+        cN, n = method_coeff(case, method, "cN"), method_coeff(case, method, "n")
+        predicted = -constitutive_stress(modulus, self.delta, self.length, cN, n)
+        maxRel, spread = uniformity(stress, predicted)
+        gap = foamio.read_patch(os.path.join(case, time, "contactGap"), self.slave, nfaces)
+        pen = -np.asarray(gap)
+        ref = (abs(float(stress.mean())) / cN) ** (1.0 / n)
+        perr = float(np.abs(pen - ref).max() / ref)
+        res.update(predicted=predicted, offset=1.0 - predicted / res["exact"], cN=cN, n=n,
+                   maxRel=maxRel, spread=spread, penetration=float(pen.mean()),
+                   penetrationRef=ref)
+        units = "fraction of |sigma_pred|"
+        checks = [
+            dict(name="%s/%s_constitutive_law" % (self.name, comp), value=maxRel,
+                 reference=0.0, error=maxRel, tolerance=self.exact_tol, units=units),
+            dict(name="%s/%s_uniformity" % (self.name, comp), value=spread, reference=0.0,
+                 error=spread, tolerance=self.exact_tol, units=units),
+            dict(name="%s/penetration_law" % self.name, value=float(pen.mean()), reference=ref,
+                 error=perr, tolerance=self.exact_tol, units="fraction of (sigma/cN)^(1/n)"),
+        ]
+        return checks, predicted, self.exact_tol
 
     def force_checks(self, case, time, res, area, predicted, tol):
         """The total normal force on the slave patch, sum_f p_f |Sf_f|, and
@@ -186,16 +279,17 @@ def pyplot():
     return plt
 
 
-def plot_centre_line(ax, res, penalty, stress, height, label, interface, xlabel, ylabel):
+def plot_centre_line(ax, res, penalty, stress, height, label, interface, xlabel, ylabel,
+                     predicted="penalty prediction"):
     """The stress of the cells of the vertical centre line (`stress`, at
     `height`) as a fraction of |sigma_exact|, the exact stress and, with
-    `penalty`, the predicted one, and the interface (a dotted line at
-    `interface`)."""
+    `penalty`, the predicted one (labelled `predicted`), and the interface
+    (a dotted line at `interface`)."""
     ax.plot(np.array(stress) / abs(res["exact"]), height, "o", label=label)
     ax.axvline(-1.0, color="k", lw=1, label="exact (gap closed)")
     if penalty:
         ax.axvline(-abs(res["predicted"]) / abs(res["exact"]), color="C3", ls="--", lw=1,
-                   label="penalty prediction")
+                   label=predicted)
     ax.axhline(interface, color="0.6", ls=":", lw=1)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
@@ -204,13 +298,14 @@ def plot_centre_line(ax, res, penalty, stress, height, label, interface, xlabel,
     ax.grid(alpha=0.3)
 
 
-def mark_pressure(ax, res, penalty):
+def mark_pressure(ax, res, penalty, predicted="penalty prediction"):
     """On an axis of p/|sigma_exact|: the exact contact pressure and, with
-    `penalty`, the predicted one as horizontal lines."""
+    `penalty`, the predicted one (labelled `predicted`) as horizontal
+    lines."""
     ax.axhline(1.0, color="k", lw=1, label="exact")
     if penalty:
         ax.axhline(abs(res["predicted"]) / abs(res["exact"]), color="C3", ls="--", lw=1,
-                   label="penalty prediction")
+                   label=predicted)
 
 
 def save(fig, axes, png):

@@ -46,7 +46,101 @@ void Foam::functionObjects::contactReport::findSlaves()
         }
     }
     slavePatches_.transfer(slaves);
+    multiplierFiles_.setSize(slavePatches_.size());
     resetNames(names);
+}
+
+
+void Foam::functionObjects::contactReport::writeMultipliers(const label i)
+{
+    const volVectorField& D = mesh_.lookupObject<volVectorField>(fieldName_);
+    const fvPatch& patch = D.boundaryField()[slavePatches_[i]].patch();
+    const UList<solidContactFvPatchVectorField::multiplierRecord>& history =
+        refCast<const solidContactFvPatchVectorField>
+        (
+            D.boundaryField()[slavePatches_[i]]
+        ).multiplierHistory();
+
+    if (!returnReduce(history.size(), maxOp<label>()))
+    {
+        return;
+    }
+
+    // This processor's rows (update, x, y, z, gap, pressure, multiplier) of
+    // the faces whose multiplier was positive at some update
+    const label nCol = 7;
+    const vectorField& Cf = patch.Cf();
+    DynamicList<scalar> rows;
+    forAll(Cf, facei)
+    {
+        bool positive = false;
+        for (const auto& rec : history)
+        {
+            positive = positive || rec.multiplier[facei] > 0;
+        }
+        if (!positive)
+        {
+            continue;
+        }
+        for (const auto& rec : history)
+        {
+            rows.append(rec.update);
+            rows.append(Cf[facei].x());
+            rows.append(Cf[facei].y());
+            rows.append(Cf[facei].z());
+            rows.append(rec.gap[facei]);
+            rows.append(rec.pressure[facei]);
+            rows.append(rec.multiplier[facei]);
+        }
+    }
+
+    List<scalarList> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = rows;
+    Pstream::gatherList(all);
+
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    if (!multiplierFiles_.set(i))
+    {
+        multiplierFiles_.set(i, createFile(names()[i] + "Multipliers"));
+        OFstream& os = multiplierFiles_[i];
+        writeHeader
+        (
+            os,
+            "Multiplier updates of slave patch " + names()[i]
+          + ": per update the multipliers the inner correctors held and the"
+            " gap and pressure they converged to"
+        );
+        writeCommented(os, "time");
+        for
+        (
+            const char* col :
+            {"update", "x", "y", "z", "gap", "pressure", "multiplier"}
+        )
+        {
+            writeTabbed(os, col);
+        }
+        os  << endl;
+    }
+
+    OFstream& os = multiplierFiles_[i];
+    for (const scalarList& procRows : all)
+    {
+        for (label r = 0; r + nCol <= procRows.size(); r += nCol)
+        {
+            writeCurrentTime(os);
+            os  << tab << label(procRows[r]);
+            for (label c = 1; c < nCol; ++c)
+            {
+                os  << tab << procRows[r + c];
+            }
+            os  << nl;
+        }
+    }
+    os.flush();
 }
 
 
@@ -66,7 +160,8 @@ void Foam::functionObjects::contactReport::writeFileHeader(const label i)
         const char* col :
         {
             "normalForce", "tangentialForce", "contactArea", "maxPressure",
-            "maxPenetration", "activeFaces", "outerCorrectors", "converged"
+            "maxPenetration", "activeFaces", "outerCorrectors", "converged",
+            "multiplierUpdates"
         }
     )
     {
@@ -144,8 +239,11 @@ bool Foam::functionObjects::contactReport::write()
                 << tab << r.activeFaces
                 << tab << r.correctors
                 << tab << converged
+                << tab << r.multiplierUpdates
                 << endl;
         }
+
+        writeMultipliers(i);
     }
     return true;
 }

@@ -126,11 +126,19 @@ bool Foam::contactMethods::uzawaMethod::updateMultipliers
         maxViolation, 1, constraintTol_, dLambda, lambdaMax, multiplierTol_
     );
 
+    // The relative change as printed: where every new multiplier is zero
+    // (the contact opened) a change divided by max(lambdaMax, VSMALL)
+    // overflowed (a floating point exception of augmentedLagrange after a
+    // lift-off, hertzCylinder -unload); GREAT stands for it there
+    const scalar relChange =
+        dLambda <= 0 ? 0
+      : dLambda < GREAT*lambdaMax ? dLambda/lambdaMax
+      : GREAT;
+
     Info<< "    contact " << patch_.name() << ": multiplier update "
         << nUpdates_ << "  max " << measureName_.c_str() << "/h = "
         << maxViolation
-        << "  max|dlambda|/max|lambda| = "
-        << dLambda/max(lambdaMax, VSMALL)
+        << "  max|dlambda|/max|lambda| = " << relChange
         << (converged_ ? "  converged" : "") << endl;
 
     if (converged_ || nUpdates_ >= maxUpdates_)
