@@ -64,10 +64,7 @@ void Foam::contactMethods::augmentedLagrange::correct
             );
         }
 
-        cond.pressure[facei] =
-            state.inRange[facei] && cond.active[facei]
-          ? state.reaction[facei]
-          : 0;
+        cond.pressure[facei] = carriedPressure(state, cond, facei);
         cond.coupled[facei] = active;
         cond.compliance[facei] = 1/e;
         cond.explicitPressure[facei] = active ? lam[facei] : 0;

@@ -85,10 +85,7 @@ void Foam::contactMethods::constitutiveLaw::correct
             active = staysOrEnters(state, cond, facei, g < 0);
         }
 
-        cond.pressure[facei] =
-            state.inRange[facei] && cond.active[facei]
-          ? state.reaction[facei]
-          : 0;
+        cond.pressure[facei] = carriedPressure(state, cond, facei);
         cond.coupled[facei] = false;
         cond.compliance[facei] = 0;
         cond.explicitPressure[facei] = 0;

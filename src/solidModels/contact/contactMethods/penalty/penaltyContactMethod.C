@@ -84,8 +84,7 @@ void Foam::contactMethods::penalty::correct
         }
         else if (implicit_)
         {
-            cond.pressure[facei] =
-                cond.active[facei] ? state.reaction[facei] : 0;
+            cond.pressure[facei] = carriedPressure(state, cond, facei);
             active = staysOrEnters
             (
                 state, cond, facei,

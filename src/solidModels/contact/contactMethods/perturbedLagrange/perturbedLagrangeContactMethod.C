@@ -109,10 +109,7 @@ void Foam::contactMethods::perturbedLagrange::correct
             );
         }
 
-        cond.pressure[facei] =
-            state.inRange[facei] && cond.active[facei]
-          ? state.reaction[facei]
-          : 0;
+        cond.pressure[facei] = carriedPressure(state, cond, facei);
 
         // The step's affine law g = C (p0 - p): C = 1/Kc + 1/eps and
         // p0 the step at zero gap (perturbedLagrangeLaw.H)
