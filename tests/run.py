@@ -48,6 +48,8 @@ PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 #     perturbedLagrange also the penalty run's force and peak to 1e-6;
 #     the soft one, Allrun -law soft, is checked against Hertz with the
 #     interface law and for its spread, constitutive_law_spreads).
+#   hertzSphere: compareSphere.py, lagrangeMultiplier only (the benchmark
+#     runs the others and two mesh levels).
 #   contactPatchTest3D: comparePatchTest3D.py, by the kind of answer each
 #     method gives (c4fpost.patchtest.METHOD_CHECKS: exact to 1e-6, the
 #     penalty's series-spring offset, the constitutive law's series
@@ -656,6 +658,17 @@ def main():
             print("== contactPatchTest -materials stiffUpper (1000:1), %s" % method, flush=True)
             tutorial_case(res, "contactPatchTest", "contactPatchTest_stiffUpper_" + method,
                           ["-method", method, "-materials", "stiffUpper"])
+
+    if want("hertzSphere"):
+        # Hertz in 3D, the quarter model on its tutorial mesh (10 slave
+        # faces across a): compareSphere.py (p0 within 4 %, the contact
+        # radius within one face, the RMS of p(r) - Hertz inside 0.8 a
+        # within 2.5 % of p0)
+        print("== hertzSphere: Hertz point contact, lagrangeMultiplier", flush=True)
+        sphere = tutorial_case(res, "hertzSphere", "hertzSphere_lagrangeMultiplier",
+                               ["-method", "lagrangeMultiplier"])
+        vtk_written(res, sphere, "hertzSphere_lagrangeMultiplier",
+                    ["D", "sigma", "contactPressure", "contactGap", "contactActive"])
 
     if want("uniaxialBar"):
         print("== uniaxialBar: load steps from a uniformFixedValue table", flush=True)

@@ -60,9 +60,8 @@ sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
 sys.path.insert(0, os.path.join(ROOT, "tutorials/contactPatchTest/validation"))
 
 import numpy as np  # noqa: E402
-from c4fpost import contactfree, foamio, kirsch  # noqa: E402
+from c4fpost import blockmesh, contactfree, contactreport, foamio, kirsch  # noqa: E402
 import compareHertz  # noqa: E402
-import scaleMesh  # noqa: E402
 import compareKirsch  # noqa: E402
 
 PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
@@ -192,7 +191,7 @@ def hertz_prepare(level=1.0, method="lagrangeMultiplier", rebuild=None):
     scaled by `level` (2: what its Allrun's -refine 2 does), the contact
     method (and the search tree's rebuild tolerance), blockMesh."""
     def prepare(case):
-        scaleMesh.scale_block_mesh(os.path.join(case, "system/blockMeshDict"), level)
+        blockmesh.scale_block_mesh(os.path.join(case, "system/blockMeshDict"), level)
         d = os.path.join(case, "0/D")
         text = open(d).read()
         text = re.sub(r"^(\s*method\s+)\w+;", r"\g<1>%s;" % method, text, flags=re.M)
@@ -572,11 +571,149 @@ def perturbed_bench():
         f.write(text + "\n")
 
 
+# --------------------------------------------------------------------------
+SPHERE_LEVELS = (1.0, 1.5)
+# The methods whose answer is the exact constraint (g_N = 0 at the converged
+# state): hertzSphere's two mesh levels are run for these
+EXACT_METHODS = ("lagrangeMultiplier", "directElimination", "augmentedLagrange",
+                 "crossConstraint", "nitsche")
+
+
+def method_runs(method, tutorial, level=None):
+    """One run of `tutorial`'s Allrun with `method` (and -refine level),
+    with its solver wall time, correctors, multiplier updates and the
+    contact report's last row."""
+    tag = "" if level in (None, 1.0) else "_refine%g" % level
+    allrun = ["-method", method] + ([] if tag == "" else ["-refine", "%g" % level])
+    r = bench_case("methods_%s_%s%s" % (tutorial, method, tag),
+                   os.path.join(ROOT, "tutorials", tutorial), allrun=allrun)
+    log = open(os.path.join(r["case"], "log." + SOLVER)).read() \
+        if os.path.exists(os.path.join(r["case"], "log." + SOLVER)) else ""
+    m = re.findall(r"multiplierUpdates = (\d+)", log)
+    r["updates"] = int(m[-1]) if m else 0
+    return r
+
+
+def methods_bench():
+    """Every method of the run-time selection table side by side: on
+    hertzCylinder (default mesh) the correctors, the solver's wall time,
+    the p0 and a errors against Hertz, the max penetration (or, where the
+    report has it, the min gap) and the multiplier updates; on
+    contactPatchTest the correctors, wall time and the stress error
+    against the exact uniform stress; on hertzSphere the exact methods at
+    two mesh levels. Markdown in WORK/methods.md, a bar chart in
+    WORK/methods.png."""
+    import compareHertz
+    import comparePatchTest
+    sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzSphere/validation"))
+    import compareSphere
+    methods = [m for m in sh("%s -listMethods" % SOLVER, ROOT).split() if m]
+    print("\n== every method side by side: %s" % ", ".join(methods), flush=True)
+    rows = []
+    for m in methods:
+        row = dict(method=m)
+        h = method_runs(m, "hertzCylinder")
+        row["hertz"] = h
+        if h["ncorr"] is not None and h["rc"] == 0:
+            res = compareHertz.compare(h["case"])
+            c = {x["name"].split("/")[-1]: x for x in res["checks"]}
+            rep = contactreport.last_row(h["case"], res.get("slave", "cylinderContact")) or {}
+            row.update(p0=c["peak_pressure"]["error"], a=c["contact_half_width"]["error"],
+                       pen=rep.get("maxPenetration"), minGap=rep.get("minGap"))
+        pt = method_runs(m, "contactPatchTest")
+        row["patch"] = pt
+        if pt["ncorr"] is not None and pt["rc"] == 0:
+            row["stress"] = comparePatchTest.compare(pt["case"])["maxRel"]
+        rows.append(row)
+        print("  %-20s hertzCylinder %s correctors, contactPatchTest %s" % (
+            m, h["ncorr"], pt["ncorr"]), flush=True)
+
+    def fmt(v, f="%.3g"):
+        return "-" if v is None else f % v
+
+    def corr(r):
+        return "-" if r["ncorr"] is None else "%d%s" % (r["ncorr"], "" if r["converged"] else "*")
+
+    lines = ["| method | Hertz correctors | Hertz wall [s] | p0 error | a error [mm] |"
+             " max penetration [m] | min gap [m] | multiplier updates | patch correctors |"
+             " patch wall [s] | patch stress error |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for row in rows:
+        h, pt = row["hertz"], row["patch"]
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %d / %d | %s | %s | %s |" % (
+            row["method"], corr(h), fmt(h["wall"], "%.1f"),
+            fmt(None if row.get("p0") is None else 100 * row["p0"], "%.2f %%"),
+            fmt(None if row.get("a") is None else 1e3 * row["a"], "%.3f"),
+            fmt(row.get("pen")), fmt(row.get("minGap")), h["updates"], pt["updates"],
+            corr(pt), fmt(pt["wall"], "%.2f"), fmt(row.get("stress"))))
+    lines += ["", "hertzCylinder: default mesh (23 slave faces across a); p0 error as a"
+              " fraction of Hertz at the measured load, a error in mm (tolerance of the tests:"
+              " 3 % and 1.5 faces = 0.4 mm); multiplier updates hertzCylinder / patch test."
+              " contactPatchTest: max over the cells of abs(sigma_yy/sigma_exact - 1), the"
+              " exact stress of the blocks in series (the penalty-like methods carry their"
+              " offset h/(s L) by design). * not converged. Wall: the solver alone, this"
+              " machine, this run."]
+
+    # hertzSphere at two levels, the exact methods
+    sph = ["", "| method | level (faces across a) | cells | correctors | wall [s] | p0 error |"
+           " a error [face widths] | RMS p - Hertz (r < 0.8 a) |",
+           "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for m in [x for x in EXACT_METHODS if x in methods]:
+        for level in SPHERE_LEVELS:
+            r = method_runs(m, "hertzSphere", level)
+            if r["ncorr"] is None or r["rc"] != 0:
+                sph.append("| %s | %g | - | failed | | | | |" % (m, level))
+                continue
+            res = compareSphere.compare(r["case"])
+            c = {x["name"].split("/")[-1]: x for x in res["checks"]}
+            cells = re.search(r"^\s*cells:\s+(\d+)", sh("checkMesh -constant", r["case"]),
+                              flags=re.M)
+            sph.append("| %s | %g (%.0f) | %s | %s | %.1f | %.4f | %.2f | %.4f |" % (
+                m, level, res["aH"] / res["hA"], cells.group(1) if cells else "-", corr(r),
+                r["wall"], c["peak_pressure"]["error"],
+                c["contact_radius"]["error"] / res["hA"], c["pressure_rms"]["error"]))
+            print("  hertzSphere %-20s level %g: %s correctors" % (m, level, r["ncorr"]),
+                  flush=True)
+    text = "\n".join(lines + sph)
+    print(text)
+    with open(os.path.join(WORK, "methods.md"), "w") as f:
+        f.write(text + "\n")
+    methods_chart(rows, os.path.join(WORK, "methods.png"))
+
+
+def methods_chart(rows, png):
+    """Bar chart of the methods table: correctors (hertzCylinder and
+    contactPatchTest) and the hertzCylinder p0 error."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    names = [r["method"] for r in rows]
+    x = np.arange(len(names))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
+    hc = [r["hertz"]["ncorr"] or 0 for r in rows]
+    pc = [r["patch"]["ncorr"] or 0 for r in rows]
+    a1.bar(x - 0.2, hc, 0.4, label="hertzCylinder")
+    a1.bar(x + 0.2, pc, 0.4, label="contactPatchTest")
+    a1.set_ylabel("outer correctors")
+    a2.bar(x, [100 * (r.get("p0") or 0) for r in rows], 0.6, color="C2")
+    a2.axhline(3, color="k", ls=":", lw=1, label="test tolerance 3 %")
+    a2.set_ylabel("hertzCylinder p0 error [%]")
+    for ax in (a1, a2):
+        ax.set_xticks(x)
+        ax.set_xticklabels(names, rotation=30, ha="right", fontsize=8)
+        ax.grid(alpha=0.3, axis="y")
+        ax.legend(fontsize=8)
+    fig.suptitle("contact methods side by side (make bench)")
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    print("plot: %s" % png)
+
+
 def main():
     import argparse
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa",
-                                       "perturbedLagrange"),
+                                       "perturbedLagrange", "methods"),
                     help="run one part only (convergence includes hertz's runs)")
     args = ap.parse_args()
     t0 = time.time()
@@ -591,6 +728,8 @@ def main():
         uzawa_bench()
     if args.only in (None, "perturbedLagrange"):
         perturbed_bench()
+    if args.only in (None, "methods"):
+        methods_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 

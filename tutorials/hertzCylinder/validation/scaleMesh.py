@@ -1,39 +1,21 @@
 #!/usr/bin/python3
 """hertzCylinder: scale every cell count of system/blockMeshDict, keeping
-the gradings (the middle entry of each (fraction cells expansion) section
-of the multi-gradings, and the n* macros). Allrun's -refine N uses it with
-an integer N (N^2 times the cells); make bench also with 0.5.
+the gradings (c4fpost.blockmesh). Allrun -refine uses it with an
+integer N (N^2 times the cells); make bench also with 0.5.
 
-    validation/scaleMesh.py system/blockMeshDict <factor>
+    validation/scaleMesh.py system/blockMeshDict <factor> [<output>]
 """
-import argparse
-import re
+import os
+import sys
 
-
-def scale_block_mesh(path, factor):
-    """Rewrite the blockMeshDict at `path` with every cell count times
-    `factor` (rounded, at least 1)."""
-    def scale(m):
-        return "%s%d%s" % (m.group(1), max(1, round(int(m.group(2)) * factor)), m.group(3))
-
-    text = open(path).read()
-    text = re.sub(r"^\w+Grading\s.*$",
-                  lambda line: re.sub(r"(\(\s*[0-9.]+\s+)(\d+)(\s+[0-9.]+\s*\))", scale,
-                                      line.group(0)),
-                  text, flags=re.M)
-    text = re.sub(r"^(n\w+\s+)(\d+)(;)", scale, text, flags=re.M)
-    open(path, "w").write(text)
-
-
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("blockMeshDict")
-    ap.add_argument("factor", type=float)
-    args = ap.parse_args()
-    if not args.factor > 0:
-        ap.error("the factor must be > 0, not %g" % args.factor)
-    scale_block_mesh(args.blockMeshDict, args.factor)
-
+# In the repository the package is three levels up; a copied case finds it
+# through $C4F_ROOT, which etc/bashrc exports
+for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
+           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
+    if os.path.isdir(os.path.join(_p, "c4fpost")):
+        sys.path.insert(0, _p)
+        break
+from c4fpost import blockmesh  # noqa: E402
 
 if __name__ == "__main__":
-    main()
+    blockmesh.main()

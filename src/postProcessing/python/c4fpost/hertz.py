@@ -11,11 +11,29 @@ Mechanics, 1985, sec. 4.2 and 5.6):
 Check against the NAFEMS-type example (R = 100 mm steel cylinder on a steel
 flat, E = 210 GPa, nu = 0.3, P' = 35 kN/mm): a = 6.21 mm, p0 = 3585 MPa.
 
+Hertz point contact: two spheres, or a sphere on a flat, pressed together
+by a load P (Johnson 1985, sec. 4.2, eq. 4.22-4.23; the sphere_ functions):
+
+  a^3  = 3 P R / (4 E*)                       radius of the contact circle
+  p0   = 3 P / (2 pi a^2) = 2 a E* / (pi R)   peak pressure
+  p(r) = p0 sqrt(1 - r^2/a^2),  r <= a
+  delta = a^2 / R                             approach of distant points
+
+Check against MOOSE's hertz_contact test (two spheres R1 = R2 = 2, so
+R = 1; E = 1.40625e7 Pa, nu = 0.25 for both, E* = 7.5e6 Pa, P = 1e4 N):
+a = 0.1, delta = 0.01, p0 = 4.77e5 Pa.
+
     >>> Es = contact_modulus(210e9, 0.3, 210e9, 0.3)
     >>> a = half_width(3.5e7, 0.1, Es); round(a * 1e3, 2)
     6.21
     >>> round(peak_pressure(3.5e7, a) / 1e6)
     3585
+    >>> Es = contact_modulus(1.40625e7, 0.25); Es
+    7500000.0
+    >>> a = sphere_radius(1e4, effective_radius(2, 2), Es); round(a, 6)
+    0.1
+    >>> round(sphere_peak_pressure(1e4, a))
+    477465
 
 `python3 hertz.py` runs these and the other self-checks.
 
@@ -68,6 +86,30 @@ def pressure(x, P, R, Estar):
     p0 = peak_pressure(P, a)
     x = np.asarray(x, float)
     return p0 * np.sqrt(np.clip(1.0 - (x / a) ** 2, 0.0, None))
+
+
+def sphere_radius(P, R, Estar):
+    """Radius a of the contact circle of a sphere (effective radius R) for
+    the load P: a^3 = 3 P R / (4 E*)."""
+    return (3.0 * P * R / (4.0 * Estar)) ** (1.0 / 3.0)
+
+
+def sphere_peak_pressure(P, a):
+    """p0 = 3 P / (2 pi a^2)."""
+    return 3.0 * P / (2.0 * math.pi * a * a)
+
+
+def sphere_load_for_radius(a, R, Estar):
+    """P that gives the contact radius a (inverse of sphere_radius)."""
+    return 4.0 * Estar * a ** 3 / (3.0 * R)
+
+
+def sphere_pressure(r, P, R, Estar):
+    """p(r) = p0 sqrt(1 - r^2/a^2) inside the contact circle, 0 outside."""
+    a = sphere_radius(P, R, Estar)
+    p0 = sphere_peak_pressure(P, a)
+    r = np.asarray(r, float)
+    return p0 * np.sqrt(np.clip(1.0 - (r / a) ** 2, 0.0, None))
 
 
 def cylinder_compression(P, R, E, nu, a):
@@ -425,6 +467,19 @@ def _self_test():
     check("integral of p(x) / P'", float((pressure(xm, 3.5e7, R, Es) * np.diff(x)).sum()) / 3.5e7,
           1.0, 1e-6)
     check("p outside the strip", float(pressure(1.01 * a, 3.5e7, R, Es)), 0.0, 0.0)
+    # the sphere: MOOSE's hertz_contact numbers, and p(r) integrates to P
+    EsS = contact_modulus(1.40625e7, 0.25)
+    aS = sphere_radius(1e4, effective_radius(2.0, 2.0), EsS)
+    check("MOOSE sphere a", aS, 0.1, 1e-12)
+    check("MOOSE sphere delta = a^2/R", aS * aS / 1.0, 0.01, 1e-12)
+    check("MOOSE sphere p0 [Pa]", sphere_peak_pressure(1e4, aS), 4.77e5, 500)
+    check("p0 = 2 a E*/(pi R)", sphere_peak_pressure(1e4, aS), 2 * aS * EsS / math.pi, 1e-6)
+    check("inverse of sphere_radius", sphere_load_for_radius(aS, 1.0, EsS), 1e4, 1e-8)
+    rr = np.linspace(0, aS, 200001)
+    rm = 0.5 * (rr[1:] + rr[:-1])
+    check("integral of 2 pi r p(r) / P",
+          float((2 * math.pi * rm * sphere_pressure(rm, 1e4, 1.0, EsS) * np.diff(rr)).sum()) / 1e4,
+          1.0, 1e-6)
     # geometry: a unit square face, and a 1 x 2 x 3 box's volume
     pts = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], float)
     Cf, Sf = face_geometry(pts, np.arange(4))
