@@ -48,9 +48,6 @@ _SYMM = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
 #                 the entry `scale` of the method's <method>Coeffs
 #   constitutive  the series solution with the law p = cN (-g)^n (cN, n of
 #                 the method's <method>Coeffs) and its uniform penetration
-#   barrier       the series solution with the barrier law (dhat of
-#                 barrierCoeffs or its default, kappa the written field
-#                 barrierStiffness) and its uniform gap
 # (a perturbed Lagrange multiplier, lambda = eps g, would be
 # dict(kind="penalty", scale=<its scale entry>): for the same eps it is
 # the penalty's state)
@@ -61,8 +58,12 @@ METHOD_CHECKS = {
     "penalty": dict(kind="penalty", scale="penaltyScale"),
     "constitutiveLaw": dict(kind="constitutive"),
     "perturbedLagrange": dict(kind="penalty", scale="penaltyScale"),
-    "barrier": dict(kind="barrier"),
 }
+# Not here yet: barrier. Its 2D check is PatchTest.barrier_checks (kind
+# barrier); contactPatchTest3D would need an open start (an Allrun -gap that
+# lifts the upper block along the turned normal of -rotate, and cellZones in
+# its blockMeshDict) and that kind in comparePatchTest3D.py. tests/run.py
+# lists it in NOT_CHECKED for contactPatchTest3D.
 
 # The barrier's default dhat, a fraction of the largest slave cell size h
 # (barrierContactMethod.C)
@@ -268,9 +269,9 @@ class PatchTest:
         included); the normal stress `comp` (the cells' `stress`) equals
         -|sigma| of barrier_solution everywhere and is uniform, and every
         slave face's gap (contactGap) equals its d; all to exact_tol (the
-        law is exact and the state uniform; the gap, about 1e-3 of Delta,
-        carries the residual's error of D magnified by Delta/d, measured
-        3e-8). Adds predicted, offset, dhat, kappa, gap and gapRef to res;
+        law is exact and the state uniform; the gap to exact_tol of
+        max(d, 1e-3 Delta): it carries the residual's error of D, about
+        1e-11 m; measured 1.6e-8 of d = 1.2e-3 Delta). Adds predicted, offset, dhat, kappa, gap and gapRef to res;
         returns (checks, predicted stress, tolerance of the contact
         force)."""
         try:
@@ -288,7 +289,12 @@ class PatchTest:
         maxRel, spread = uniformity(stress, predicted)
         gap = np.asarray(foamio.read_patch(os.path.join(case, time, "contactGap"), self.slave,
                                            nfaces))
-        gerr = float(np.abs(gap - d).max() / d)
+        # The gap to exact_tol of itself, or of 1e-3 Delta where it is
+        # smaller: the outer residual (1e-9) leaves about 1e-11 m in D, which
+        # a gap of 2e-7 m (kappa doubled from kappaScale 0.01) would read as
+        # 6.5e-6 of itself
+        gscale = max(d, 1e-3 * self.delta)
+        gerr = float(np.abs(gap - d).max() / gscale)
         res.update(predicted=predicted, offset=1.0 - predicted / res["exact"], dhat=dhat,
                    kappa=kappa, maxRel=maxRel, spread=spread, gap=float(gap.mean()), gapRef=d)
         units = "fraction of |sigma_pred|"
@@ -298,7 +304,8 @@ class PatchTest:
             dict(name="%s/%s_uniformity" % (self.name, comp), value=spread, reference=0.0,
                  error=spread, tolerance=self.exact_tol, units=units),
             dict(name="%s/gap_barrier_law" % self.name, value=float(gap.mean()), reference=d,
-                 error=gerr, tolerance=self.exact_tol, units="fraction of d"),
+                 error=gerr, tolerance=self.exact_tol,
+                 units="fraction of max(d, 1e-3 Delta)"),
             dict(name="%s/gap_open" % self.name, value=float(gap.min()), reference=0.0,
                  error=0.0, tolerance=0.0, units="m", passed=bool(gap.min() > 0)),
         ]

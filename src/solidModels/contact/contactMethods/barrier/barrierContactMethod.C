@@ -24,9 +24,6 @@ namespace
 //- The default dhat as a fraction of the largest slave cell size h
 const Foam::scalar defaultDhatScale = 1e-3;
 
-//- A limit this close to 1 is the round-off of the previous scaling
-const Foam::scalar limitRoundOff = 1e-9;
-
 } // End anonymous namespace
 
 
@@ -256,8 +253,7 @@ void Foam::contactMethods::barrier::correct
             cond.explicitPressure[facei] = lin.pressure0;
         }
 
-        // Not counted as a change: the law is C2 across dhat
-        cond.active[facei] = active;
+        cond.setActive(facei, active);
     }
 }
 
@@ -328,6 +324,11 @@ Foam::scalar Foam::contactMethods::barrier::stepLimit
     const boolList& inRangeAfter
 ) const
 {
+    // An update is limited when a gap would fall below half its fraction;
+    // then it is scaled so that the closest face keeps the whole fraction:
+    // the margin takes the round-off of the measured gaps (differences of
+    // coordinates), so that a scaled update is not limited again
+    bool limited = false;
     scalar alpha = 1;
     forAll(gapAfter, facei)
     {
@@ -337,21 +338,21 @@ Foam::scalar Foam::contactMethods::barrier::stepLimit
         }
         if (before.inRange[facei])
         {
+            const scalar g = before.gap[facei];
+            limited = limited || gapAfter[facei] < 0.5*stepFraction_*g;
             alpha = min
             (
                 alpha,
-                c4f::contact::barrierStepLimit
-                (
-                    before.gap[facei], gapAfter[facei], stepFraction_
-                )
+                c4f::contact::barrierStepLimit(g, gapAfter[facei], stepFraction_)
             );
         }
         else if (!(gapAfter[facei] > 0))
         {
             // A face that came into range closed: no gap before to keep a
-            // fraction of; halve the step and measure again
+            // fraction of; halve the update and measure again
+            limited = true;
             alpha = min(alpha, scalar(0.5));
         }
     }
-    return alpha > 1 - limitRoundOff ? 1 : alpha;
+    return limited ? alpha : 1;
 }
