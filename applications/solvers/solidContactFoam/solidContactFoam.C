@@ -39,6 +39,12 @@ Description
         (Uzawa), and while they move the correctors go on from the
         converged state; a method that reaches its maximum number of
         updates unconverged fails the step.
+    A contact method that keeps every gap positive (barrier) limits each
+    corrector's update of D, after the solve and after Anderson's step
+    (which can penetrate too): D moves back along the update to
+    x_k + alpha (x_k+1 - x_k) until the method admits the gaps it measures
+    there (contactStateReporter::stepLimit, outerCorrectorAcceleration::
+    scaleStep).
     The plain iteration keeps the solve's D at convergence; the
     accelerated one keeps the state the test was made at, which is a fixed
     point of the corrector to the tolerance (the traction and contact
@@ -156,6 +162,10 @@ int main(int argc, char *argv[])
     // Anderson acceleration of the outer correctors, or none
     outerCorrectorAcceleration acceleration(solidControls, D);
 
+    // Scalings of one update a step limit may ask for (each is measured
+    // anew; with gaps linear along the update one suffices)
+    const label maxStepLimits = 30;
+
     Info<< "\nStarting load stepping\n" << endl;
 
     while (runTime.loop())
@@ -238,6 +248,30 @@ int main(int argc, char *argv[])
                 (
                     contactStateReporter::activeSetChanged(D)
                 );
+            }
+
+            // A method that keeps every gap positive (barrier) limits the
+            // update of the iterate actually kept (the solve's, the
+            // accelerated or the accepted one): D moves back along it
+            // until every such method admits it, measured anew each time
+            // (a backtracking line search)
+            for (label nLimit = 0; ; ++nLimit)
+            {
+                const scalar alpha = contactStateReporter::stepLimit(D);
+                if (alpha >= 1)
+                {
+                    break;
+                }
+                if (nLimit == maxStepLimits)
+                {
+                    FatalErrorInFunction
+                        << "Load step at time " << runTime.timeName()
+                        << ", corrector " << nCorr << ": the contact step"
+                        << " limit still asks for " << alpha << " of the"
+                        << " update after " << maxStepLimits << " scalings"
+                        << exit(FatalError);
+                }
+                acceleration.scaleStep(alpha);
             }
 
             gradD = interfaces.grad(D, sigma - impK*gradD, impK);

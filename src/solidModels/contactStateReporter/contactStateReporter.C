@@ -117,3 +117,18 @@ bool Foam::contactStateReporter::multipliersConverged
     );
     return conv;
 }
+
+
+Foam::scalar Foam::contactStateReporter::stepLimit(volVectorField& D)
+{
+    scalar alpha = 1;
+    forEachReporter<contactStateReporter>
+    (
+        D.boundaryFieldRef(),
+        [&](contactStateReporter& rep, const label)
+        {
+            alpha = min(rep.stepLimit(), alpha);
+        }
+    );
+    return alpha;
+}

@@ -45,6 +45,16 @@ the slave's (lowerTop, or upperBottom after Allrun -slave upper: the
 patch with `master no` in the written D). With -materials stiffUpper
 (1000:1) sigma_exact = -1.998e4 Pa.
 
+barrier (the clamped log barrier, dhat of barrierCoeffs or 1e-3 of the
+largest slave h, kappa the written field barrierStiffness, Allrun opens
+an initial gap by lifting the upper block, the applied displacement
+unchanged): the bodies stay apart by a uniform gap d, so the column is
+shortened by Delta + d: |sigma| L/E = Delta + d with p(d) = |sigma|
+(c4fpost.patchtest.barrier_solution). Checks: every cell's sigma_yy
+equals -|sigma| and every slave face's gap equals d, both to 1e-6 (as
+the exact methods; the gap, 1.2e-3 of Delta, measured 2.8e-8 off, the
+stress 5e-11), and every gap is open.
+
 Both: the total normal force on the slave patch, sum_f p_f |Sf_f|, against
 |sigma| (exact or penalty) times the patch area (1 m x dz), with the same
 tolerance as the stress; and, when the contactReport function object wrote
@@ -117,6 +127,9 @@ def compare(case):
     if method == "constitutiveLaw":
         checks, predicted, forceTol = constitutive_checks(case, time, test, res, syy, Eu,
                                                           Cf.shape[0])
+    elif method == "barrier":
+        checks, predicted, forceTol = test.barrier_checks(case, time, res, "syy", syy, Eu,
+                                                          Cf.shape[0], h)
     elif method == "perturbedLagrange":
         checks, predicted, forceTol = test.stress_checks(case, res, "syy", True, Eu, K, h,
                                                          coeffs="perturbedLagrangeCoeffs",
@@ -184,6 +197,10 @@ def main():
               " (expected (sigma/cN)^(1/n) = %.9g m)"
               % (res["cN"], res["n"], res["predicted"], res["penetration"],
                  res["penetrationRef"]))
+    if res["method"] == "barrier":
+        print("  barrier dhat = %g m, kappa = %g Pa/m: sigma = %.9g Pa, gap %.9g m"
+              " (expected d with p(d) = |sigma| and |sigma| L/E = Delta + d: %.9g m)"
+              % (res["dhat"], res["kappa"], res["predicted"], res["gap"], res["gapRef"]))
     patch_test(res["slave"]).print_force(res)
     print("%8s %8s %16s" % ("x", "y", "sigma_yy [Pa]"))
     for x, y, s in zip(res["colX"], res["colY"], res["colSyy"]):

@@ -4,7 +4,7 @@ import os
 
 COLUMNS = ["time", "normalForce", "tangentialForce", "contactArea",
            "maxPressure", "maxPenetration", "activeFaces", "outerCorrectors",
-           "converged", "multiplierUpdates"]
+           "converged", "multiplierUpdates", "minGap"]
 
 
 def _start_time_key(name):

@@ -12,6 +12,12 @@ With the constitutive interface law p = cN (-g)^n in series the state is
 uniform as well: |sigma| L/E + (|sigma|/cN)^(1/n) = Delta
 (constitutive_stress), and every slave face penetrates by (|sigma|/cN)^(1/n).
 
+With the barrier (p = -kappa b'(d), the clamped log barrier of range dhat)
+the bodies stay apart by a uniform gap d, so the column is shortened by
+Delta + d (the applied displacement is the total from the touching
+configuration): |sigma| L/E = Delta + d with p(d) = |sigma|
+(barrier_solution).
+
 The validation scripts keep the constants of their case and the tolerances,
 with where the tolerances come from; this module reads the fields, builds
 the checks from those numbers, and prints and plots what the two have in
@@ -23,6 +29,7 @@ that a patch test knows how to check it: a method of solidContactFoam
 and tests/run.py takes its list of 3D methods from here). Adding a method
 is one entry.
 """
+import math
 import os
 import re
 
@@ -52,6 +59,15 @@ METHOD_CHECKS = {
     "constitutiveLaw": dict(kind="constitutive"),
     "perturbedLagrange": dict(kind="penalty", scale="penaltyScale"),
 }
+# Not here yet: barrier. Its 2D check is PatchTest.barrier_checks (kind
+# barrier); contactPatchTest3D would need an open start (an Allrun -gap that
+# lifts the upper block along the turned normal of -rotate, and cellZones in
+# its blockMeshDict) and that kind in comparePatchTest3D.py. tests/run.py
+# lists it in NOT_CHECKED for contactPatchTest3D.
+
+# The barrier's default dhat, a fraction of the largest slave cell size h
+# (barrierContactMethod.C)
+BARRIER_DEFAULT_DHAT_SCALE = 1e-3
 
 
 def method_check(method):
@@ -79,6 +95,31 @@ def constitutive_stress(modulus, delta, length, cN, n):
         else:
             hi = mid
     return 0.5 * (lo + hi)
+
+
+def barrier_pressure(d, dhat, kappa):
+    """The barrier's pressure p = -kappa b'(d) = kappa (dhat - d)(dhat/d - 1
+    - 2 ln(d/dhat)) for 0 < d < dhat, 0 beyond (src/kernels/contact/
+    barrierLaw)."""
+    if d >= dhat:
+        return 0.0
+    return kappa * (dhat - d) * (dhat / d - 1.0 - 2.0 * math.log(d / dhat))
+
+
+def barrier_solution(modulus, delta, length, dhat, kappa):
+    """(|sigma|, d) of a column (modulus, length) shortened by delta with the
+    barrier in series, the gap d held open: modulus (delta + d)/length =
+    p(d) = |sigma|, by bisection on (0, dhat) (p falls from infinity to 0,
+    the left side rises: the root is unique)."""
+    lo, hi = 0.0, dhat
+    for _ in range(300):
+        mid = 0.5 * (lo + hi)
+        if barrier_pressure(mid, dhat, kappa) > modulus * (delta + mid) / length:
+            lo = mid
+        else:
+            hi = mid
+    d = 0.5 * (lo + hi)
+    return modulus * (delta + d) / length, d
 
 
 def stress_tensor(case, time, ncells):
@@ -216,6 +257,57 @@ class PatchTest:
                  error=spread, tolerance=self.exact_tol, units=units),
             dict(name="%s/penetration_law" % self.name, value=float(pen.mean()), reference=ref,
                  error=perr, tolerance=self.exact_tol, units="fraction of (sigma/cN)^(1/n)"),
+        ]
+        return checks, predicted, self.exact_tol
+
+    def barrier_checks(self, case, time, res, comp, stress, modulus, nfaces, h,
+                       method="barrier"):
+        """The checks of a column with the barrier in series: dhat of
+        <method>Coeffs in 0/D (or BARRIER_DEFAULT_DHAT_SCALE times the
+        largest slave h), kappa the field barrierStiffness written on the
+        slave (uniform: the kappa the step converged with, doublings
+        included); the normal stress `comp` (the cells' `stress`) equals
+        -|sigma| of barrier_solution everywhere and is uniform, and every
+        slave face's gap (contactGap) equals its d; all to exact_tol (the
+        law is exact and the state uniform; the gap to exact_tol of
+        max(d, 1e-3 Delta): it carries the residual's error of D, about
+        1e-11 m; measured 1.6e-8 of d = 1.2e-3 Delta). Adds predicted, offset, dhat, kappa, gap and gapRef to res;
+        returns (checks, predicted stress, tolerance of the contact
+        force)."""
+        try:
+            dhat = method_coeff(case, method, "dhat")
+        except (KeyError, AttributeError, TypeError, ValueError):
+            dhat = BARRIER_DEFAULT_DHAT_SCALE * float(np.max(h))
+        kappa = np.asarray(foamio.read_patch(os.path.join(case, time, "barrierStiffness"),
+                                             self.slave, nfaces))
+        if np.ptp(kappa) > 1e-12 * kappa.max():
+            raise RuntimeError("barrierStiffness is not uniform on %s: %g .. %g"
+                               % (self.slave, kappa.min(), kappa.max()))
+        kappa = float(kappa.mean())
+        sigma, d = barrier_solution(modulus, self.delta, self.length, dhat, kappa)
+        predicted = -sigma
+        maxRel, spread = uniformity(stress, predicted)
+        gap = np.asarray(foamio.read_patch(os.path.join(case, time, "contactGap"), self.slave,
+                                           nfaces))
+        # The gap to exact_tol of itself, or of 1e-3 Delta where it is
+        # smaller: the outer residual (1e-9) leaves about 1e-11 m in D, which
+        # a gap of 2e-7 m (kappa doubled from kappaScale 0.01) would read as
+        # 6.5e-6 of itself
+        gscale = max(d, 1e-3 * self.delta)
+        gerr = float(np.abs(gap - d).max() / gscale)
+        res.update(predicted=predicted, offset=1.0 - predicted / res["exact"], dhat=dhat,
+                   kappa=kappa, maxRel=maxRel, spread=spread, gap=float(gap.mean()), gapRef=d)
+        units = "fraction of |sigma_pred|"
+        checks = [
+            dict(name="%s/%s_barrier_law" % (self.name, comp), value=maxRel,
+                 reference=0.0, error=maxRel, tolerance=self.exact_tol, units=units),
+            dict(name="%s/%s_uniformity" % (self.name, comp), value=spread, reference=0.0,
+                 error=spread, tolerance=self.exact_tol, units=units),
+            dict(name="%s/gap_barrier_law" % self.name, value=float(gap.mean()), reference=d,
+                 error=gerr, tolerance=self.exact_tol,
+                 units="fraction of max(d, 1e-3 Delta)"),
+            dict(name="%s/gap_open" % self.name, value=float(gap.min()), reference=0.0,
+                 error=0.0, tolerance=0.0, units="m", passed=bool(gap.min() > 0)),
         ]
         return checks, predicted, self.exact_tol
 

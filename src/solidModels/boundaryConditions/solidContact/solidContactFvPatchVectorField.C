@@ -65,6 +65,26 @@ Foam::scalarField activeFraction(const Foam::boolList& active)
 }
 
 
+//- The smallest gap over the faces in range, over all processors (GREAT
+//  where none is in range)
+Foam::scalar minGapInRange
+(
+    const Foam::scalarField& gap,
+    const Foam::boolList& inRange
+)
+{
+    Foam::scalar g = Foam::GREAT;
+    forAll(gap, facei)
+    {
+        if (inRange[facei])
+        {
+            g = Foam::min(g, gap[facei]);
+        }
+    }
+    return Foam::returnReduce(g, Foam::minOp<Foam::scalar>());
+}
+
+
 //- The active flags back from their 1/0 form (mapped values may blend)
 Foam::boolList activeFlags(const Foam::scalarField& a)
 {
@@ -510,7 +530,9 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
             << returnReduce(label(std::count(cond_.active.begin(), cond_.active.end(), true)), sumOp<label>())
             << "  changes = " << returnReduce(cond_.nChanged, sumOp<label>())
             << "  F_N = " << normalForce_
-            << "  max|g| = " << gMax(mag(state.gap)) << endl;
+            << "  max|g| = " << gMax(mag(state.gap))
+            << "  minGap = " << minGapInRange(state.gap, state.inRange)
+            << endl;
     }
 }
 
@@ -944,6 +966,9 @@ Foam::solidContactFvPatchVectorField::contactReport() const
         r.maxPenetration = max(r.maxPenetration, -gap[facei]);
     }
 
+    r.minGap =
+        pair_.valid() ? minGapInRange(pair_->gap(), pair_->inRange()) : GREAT;
+
     reduce(r.normalForce, sumOp<scalar>());
     reduce(r.tangentialForce, sumOp<scalar>());
     reduce(r.contactArea, sumOp<scalar>());
@@ -1030,6 +1055,43 @@ bool Foam::solidContactFvPatchVectorField::multipliersConverged() const
 }
 
 
+Foam::scalar Foam::solidContactFvPatchVectorField::stepLimit()
+{
+    // The method is the same on every processor, so all take this branch
+    // together
+    if (master_ || !coupling() || !method_->limitsStep())
+    {
+        return 1;
+    }
+
+    // The gaps at the current D (the update's), by the same search as a
+    // corrector's; lastState_ holds those the corrector started from
+    const fvMesh& mesh = patch().boundaryMesh().mesh();
+    const volVectorField& D =
+        db().lookupObject<volVectorField>(internalField().name());
+    const tmp<pointVectorField> tpointD =
+        volPointInterpolation::New(mesh).interpolate(D);
+    const vectorField Df(*this);
+    pair_->update(shadow(), Df, tpointD());
+
+    const scalar alpha = returnReduce
+    (
+        method_->stepLimit(lastState_, pair_->gap(), pair_->inRange()),
+        minOp<scalar>()
+    );
+
+    if (alpha < 1)
+    {
+        Info<< "    contact " << patch().name() << ": step limited to "
+            << alpha << " of the update (minGap "
+            << minGapInRange(lastState_.gap, lastState_.inRange)
+            << " -> " << minGapInRange(pair_->gap(), pair_->inRange())
+            << " m)" << endl;
+    }
+    return alpha;
+}
+
+
 void Foam::solidContactFvPatchVectorField::autoMap
 (
     const fvPatchFieldMapper& m
@@ -1095,6 +1157,7 @@ Foam::string Foam::solidContactFvPatchVectorField::contactState() const
     os  << "F_N = " << r.normalForce
         << "  active = " << r.activeFaces
         << "  maxPenetration = " << r.maxPenetration
+        << "  minGap = " << r.minGap
         << "  changes = " << r.activeSetChanges;
     if (method_->updatesMultipliers())
     {

@@ -161,7 +161,7 @@ void Foam::functionObjects::contactReport::writeFileHeader(const label i)
         {
             "normalForce", "tangentialForce", "contactArea", "maxPressure",
             "maxPenetration", "activeFaces", "outerCorrectors", "converged",
-            "multiplierUpdates"
+            "multiplierUpdates", "minGap"
         }
     )
     {
@@ -240,6 +240,7 @@ bool Foam::functionObjects::contactReport::write()
                 << tab << r.correctors
                 << tab << converged
                 << tab << r.multiplierUpdates
+                << tab << r.minGap
                 << endl;
         }
 

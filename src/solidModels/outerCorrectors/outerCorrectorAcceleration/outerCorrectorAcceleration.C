@@ -199,10 +199,8 @@ void Foam::outerCorrectorAcceleration::reset()
 
 void Foam::outerCorrectorAcceleration::storeIterate()
 {
-    if (anderson_)
-    {
-        gather(x_);
-    }
+    // Also without acceleration: a limited step goes back towards x
+    gather(x_);
 }
 
 
@@ -232,4 +230,16 @@ void Foam::outerCorrectorAcceleration::accept()
     {
         scatter(x_);
     }
+}
+
+
+void Foam::outerCorrectorAcceleration::scaleStep(const scalar alpha)
+{
+    gather(g_);
+    xNext_.resize(x_.size());
+    for (std::size_t i = 0; i < x_.size(); ++i)
+    {
+        xNext_[i] = x_[i] + alpha*(g_[i] - x_[i]);
+    }
+    scatter(xNext_);
 }
