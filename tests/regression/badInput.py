@@ -177,6 +177,29 @@ CASES = [
       ("0/D", r"(perturbedLagrangeCoeffs\s*\{)", r"\1 penetrationTolerance 1e-3;")],
      ["FOAM FATAL IO ERROR", "Entry 'penetrationTolerance 0.001'", "not an entry of perturbedLagrange",
       "constraintTolerance", "perturbedLagrangeCoeffs", "lowerTop"]),
+    # Nitsche's gamma0 and the coefficient-free direct elimination
+    ("nitscheZeroGamma0", "contactPatchTest",
+     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method nitsche;"),
+      ("0/D", r"^(\s*)gamma0\s+10;", r"\1gamma0 0;")],
+     ["FOAM FATAL IO ERROR", "Invalid gamma0 0", "positive, finite", "nitscheCoeffs",
+      "lowerTop"]),
+    ("nitscheNegativeGamma0", "contactPatchTest",
+     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method nitsche;"),
+      ("0/D", r"^(\s*)gamma0\s+10;", r"\1gamma0 -10;")],
+     ["FOAM FATAL IO ERROR", "Invalid gamma0 -10", "positive, finite", "nitscheCoeffs"]),
+    # inf and nan are words to OpenFOAM's tokenizer: its own FatalIOError
+    # names the entry (1e400 is no test: the tokenizer's strtod overflow
+    # traps, sigFpe, before any check; validNitscheParameter's test of
+    # finiteness is the kernel's, unit-tested)
+    ("nitscheInfiniteGamma0", "contactPatchTest",
+     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method nitsche;"),
+      ("0/D", r"^(\s*)gamma0\s+10;", r"\1gamma0 inf;")],
+     ["FOAM FATAL IO ERROR", "expected scalar value", "word 'inf'", "nitscheCoeffs.gamma0"]),
+    ("directEliminationWithCoefficient", "contactPatchTest",
+     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method directElimination;"),
+      ("0/D", r"(directEliminationCoeffs\s*\{)", r"\1 activeSetScale 1;")],
+     ["FOAM FATAL IO ERROR", "Entry 'activeSetScale'", "directElimination has no coefficients",
+      "directEliminationCoeffs", "lowerTop"]),
     ("invalidNormals", "contactPatchTest",
      [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method lagrangeMultiplier; normals smooth;")],
      ["FOAM FATAL IO ERROR", "Invalid normals smooth", "faces", "smoothed", "lowerTop"]),

@@ -53,7 +53,7 @@ std::string describeNitscheParameterRequirement()
 {
     return
         "gamma0 must be a positive, finite number (gamma = gamma0 K/h;"
-        " any gamma0 > 0 gives the same converged answer, 10 is the usual"
+        " the method is consistent for any gamma0 > 0; 10 is the usual"
         " choice)";
 }
 
