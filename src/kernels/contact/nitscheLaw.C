@@ -21,6 +21,25 @@ double nitscheNormalStress
 }
 
 
+double nitscheSlaveWeight
+(
+    const double slaveStiffness,
+    const double masterStiffness
+)
+{
+    // No master stiffness (a face out of reach, where the transfer has no
+    // source): the slave's flux alone
+    if (!(masterStiffness > 0))
+    {
+        return 1;
+    }
+    // In compliances, so that a near-rigid body (k -> infinity) gets
+    // weight 0 without an inf/inf
+    const double cs = 1/slaveStiffness, cm = 1/masterStiffness;
+    return cs/(cs + cm);
+}
+
+
 NitscheValue nitschePressure
 (
     const double gap,

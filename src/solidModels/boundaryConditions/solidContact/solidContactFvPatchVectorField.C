@@ -469,6 +469,13 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
         (
             solidPatchTractions::sigma(master.patch()).patchInternalField()()
         );
+        const fvPatch& mp = master.patch();
+        const scalarField masterKh
+        (
+            solidPatchTractions::impK(mp)*mp.magSf()
+           /scalarField(mesh.V().field(), mp.faceCells())
+        );
+        state.masterStiffness = pair_->slaveValues(masterKh);
     }
 
     // 4. The method's decision

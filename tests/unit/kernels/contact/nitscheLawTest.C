@@ -167,3 +167,28 @@ TEST(nitscheLaw, parameterValidity)
     EXPECT_FALSE(validNitscheParameter(std::numeric_limits<double>::quiet_NaN()));
     EXPECT_NE(describeNitscheParameterRequirement().find("positive"), std::string::npos);
 }
+
+TEST(nitscheLaw, stiffnessWeights)
+{
+    // Like bodies and cells: the plain mean
+    EXPECT_DOUBLE_EQ(nitscheSlaveWeight(stiffness, stiffness), 0.5);
+    // Each body's weight its compliance share: the soft slave of a 1000:1
+    // pair carries 1000/1001 of the flux
+    EXPECT_NEAR(nitscheSlaveWeight(stiffness, 1000*stiffness), 1000.0/1001, 1e-15);
+    EXPECT_NEAR(nitscheSlaveWeight(1000*stiffness, stiffness), 1.0/1001, 1e-15);
+    // A rigid master: the slave alone; no master (out of reach): the slave
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(nitscheSlaveWeight(stiffness, inf), 1.0);
+    EXPECT_EQ(nitscheSlaveWeight(stiffness, 0.0), 1.0);
+    EXPECT_EQ(nitscheSlaveWeight(stiffness, -1.0), 1.0);
+    EXPECT_EQ(nitscheSlaveWeight(stiffness, std::numeric_limits<double>::quiet_NaN()), 1.0);
+    // Consistent: any weights give the contact pressure at the exact state
+    for (const double ks : {1e9, stiffness, 1e18})
+    {
+        const double w = nitscheSlaveWeight(ks, stiffness);
+        EXPECT_GE(w, 0.0);
+        EXPECT_LE(w, 1.0);
+        const double p = 3e6;
+        EXPECT_NEAR(nitschePressure(0.0, w*(-p) + (1 - w)*(-p), 10*ks).pressure, p, 1e-9*p);
+    }
+}

@@ -23,8 +23,19 @@ Foam::contactMethods::nitsche::nitsche
 )
 :
     contactMethod(patch, coeffs),
-    gamma0_(coeffs.getOrDefault<scalar>("gamma0", 10))
+    gamma0_(coeffs.getOrDefault<scalar>("gamma0", 10)),
+    weights_(coeffs.getOrDefault<word>("weights", "equal"))
 {
+    if (weights_ != "equal" && weights_ != "stiffness")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid weights " << weights_ << " in " << coeffs.name()
+            << " (contact patch " << patch.name() << "): valid are equal"
+            << " ((1/2)(slave + master) of the cells' normal stress) and"
+            << " stiffness (each body's by its compliance share h/K)"
+            << exit(FatalIOError);
+    }
+
     if (!c4f::contact::validNitscheParameter(gamma0_))
     {
         FatalIOErrorInFunction(coeffs)
@@ -47,11 +58,17 @@ void Foam::contactMethods::nitsche::correct
     forAll(state.gap, facei)
     {
         const vector& n = state.normal[facei];
-        const scalar sigmaN = c4f::contact::nitscheNormalStress
-        (
-            n & state.cellStress[facei] & n,
-            n & state.masterCellStress[facei] & n
-        );
+        const scalar ss = n & state.cellStress[facei] & n;
+        const scalar sm = n & state.masterCellStress[facei] & n;
+        scalar sigmaN = c4f::contact::nitscheNormalStress(ss, sm);
+        if (weights_ == "stiffness")
+        {
+            const scalar ws = c4f::contact::nitscheSlaveWeight
+            (
+                state.stiffness[facei], state.masterStiffness[facei]
+            );
+            sigmaN = ws*ss + (1 - ws)*sm;
+        }
         const scalar gamma = c4f::contact::nitscheStabilisation
         (
             gamma0_, state.stiffness[facei]
