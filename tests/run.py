@@ -48,6 +48,14 @@ PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 #     perturbedLagrange also the penalty run's force and peak to 1e-6;
 #     the soft one, Allrun -law soft, is checked against Hertz with the
 #     interface law and for its spread, constitutive_law_spreads).
+#   directElimination (exact, no multiplier): as lagrangeMultiplier, and
+#     the LM run's stress field (both tutorials), force and peak (Hertz)
+#     to 1e-6;
+#   nitsche (consistent): exact on contactPatchTest for gamma0 = 1, 10
+#     (0/D) and 100; hertzCylinder within compareHertz's tolerances, its
+#     penetration (the FV flux's consistency error) well below the
+#     penalty's with the same scale, and on 2 processors equal to serial
+#     (the master-to-slave stress transfer).
 #   hertzSphere: compareSphere.py, lagrangeMultiplier only (the benchmark
 #     runs the others and two mesh levels).
 #   contactPatchTest3D: comparePatchTest3D.py, by the kind of answer each
@@ -60,9 +68,11 @@ PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 #     tolerances; and every corrector's smallest gap > 0 (barrier_gaps_open).
 CHECKED_METHODS = {
     "contactPatchTest": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
-                         "crossConstraint", "constitutiveLaw", "perturbedLagrange", "barrier"),
+                         "crossConstraint", "constitutiveLaw", "perturbedLagrange",
+                         "directElimination", "nitsche", "barrier"),
     "hertzCylinder": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
-                      "crossConstraint", "constitutiveLaw", "perturbedLagrange", "barrier"),
+                      "crossConstraint", "constitutiveLaw", "perturbedLagrange",
+                      "directElimination", "nitsche", "barrier"),
     "contactPatchTest3D": tuple(patchtest.METHOD_CHECKS),
 }
 # Methods a tutorial cannot run yet, each with the reason; printed as a
@@ -363,6 +373,35 @@ def contact_free_agrees(res, contact):
     serial_parallel_agree(res, contact, case, "hertzCylinderContactFree/D_equals_contact", 1e-6)
 
 
+def nitsche_hertz(res, cases):
+    """Nitsche on hertzCylinder (gamma0 10, penaltyScale 10 in 0/D): at the
+    fixed point the gap is the difference of the cells' and the face's
+    normal stress over gamma, O(h grad sigma)/gamma, not the penalty's
+    p/eps: its max penetration at most 1/10 of the penalty run's with the
+    same scale (measured 0.03; a Nitsche that lost its flux term and became
+    the penalty would give 1). Then on 2 processors: the master's cell
+    stress reaches the slave by the gathered master-to-slave transfer, so
+    force and peak equal the serial run's to 1e-6, as for the other
+    methods."""
+    if "penalty" in cases:
+        n = contactreport.last_row(cases["nitsche"], "cylinderContact")
+        p = contactreport.last_row(cases["penalty"], "cylinderContact")
+        if n is None or p is None:
+            res.add("hertzCylinder_nitsche/penetration_below_penalty", False,
+                    note="no contactReport rows")
+        else:
+            ratio = n["maxPenetration"] / p["maxPenetration"]
+            res.add("hertzCylinder_nitsche/penetration_below_penalty", ratio <= 0.1,
+                    n["maxPenetration"], p["maxPenetration"], ratio, 0.1)
+    print("== hertzCylinder: nitsche on 2 processors", flush=True)
+    par = tutorial_case(res, "hertzCylinder", "hertzCylinderParallel_nitsche",
+                        ["-method", "nitsche", "-parallel"])
+    if os.path.exists(os.path.join(par, "log.solidContactFoam")):
+        decomposed(res, par, "hertzCylinderParallel_nitsche/decomposed", 2)
+        contact_serial_parallel_agree(res, cases["nitsche"], par,
+                                      "hertzCylinderParallel_nitsche", 1e-6)
+
+
 def constitutive_law_spreads(res, stiff):
     """hertzCylinder with the soft interface law (Allrun -method
     constitutiveLaw -law soft): compareHertz checks it against Hertz's
@@ -580,6 +619,22 @@ def main():
         if "perturbedLagrange" in cases and "penalty" in cases:
             stress_fields_agree(res, cases["penalty"], cases["perturbedLagrange"],
                                 "contactPatchTest_perturbedLagrange/sigma_equals_penalty", 1e-6)
+        # directElimination imposes LM's g_N = 0 with another active-set
+        # rule and no multiplier: the same fixed point, the LM run's stress
+        # field to 1e-6 (measured 1e-11)
+        if "directElimination" in cases and "lagrangeMultiplier" in cases:
+            stress_fields_agree(res, cases["lagrangeMultiplier"], cases["directElimination"],
+                                "contactPatchTest_directElimination/sigma_equals_lagrangeMultiplier",
+                                1e-6)
+        # Nitsche is consistent: the uniform stress to 1e-6 whatever gamma0
+        # (comparePatchTest's exact check; 10 is the tutorial's), no
+        # penalty offset
+        if "nitsche" in cases:
+            for gamma0 in ("1", "100"):
+                print("== contactPatchTest: nitsche, gamma0 = %s" % gamma0, flush=True)
+                tutorial_case(res, "contactPatchTest", "contactPatchTest_nitsche_gamma0_" + gamma0,
+                              ["-method", "nitsche"],
+                              edit=lambda case, g=gamma0: set_coeff(case, "gamma0", g))
         print("== contactPatchTest: onNonConvergence continue", flush=True)
         accept_unconverged(res)
 
@@ -610,6 +665,18 @@ def main():
         if "perturbedLagrange" in cases and "penalty" in cases:
             contact_serial_parallel_agree(res, cases["penalty"], cases["perturbedLagrange"],
                                           "hertzCylinder_perturbedLagrange", 1e-6, ref="penalty")
+        # directElimination and the Lagrange multiplier: the same answer
+        # (force, peak and the stress field to 1e-6; measured 1e-9)
+        if "directElimination" in cases and "lagrangeMultiplier" in cases:
+            contact_serial_parallel_agree(res, cases["lagrangeMultiplier"],
+                                          cases["directElimination"],
+                                          "hertzCylinder_directElimination", 1e-6,
+                                          ref="lagrangeMultiplier")
+            stress_fields_agree(res, cases["lagrangeMultiplier"], cases["directElimination"],
+                                "hertzCylinder_directElimination/sigma_equals_lagrangeMultiplier",
+                                1e-6)
+        if "nitsche" in cases:
+            nitsche_hertz(res, cases)
         # Augmented Lagrange on 2 processors: the multiplier decisions are
         # reduced, so both take the same updates and agree like LM's runs;
         # then the reconstructed case restarted in serial continues its
@@ -710,6 +777,17 @@ def main():
             tutorial_case(res, "hertzCylinder", "hertzCylinder_nearRigid_blockSlave_" + method,
                           ["-method", method, "-materials", "nearRigidCylinder",
                            "-slave", "block"])
+        # Nitsche on the near-rigid indenter needs the stiffness-weighted
+        # flux (the compliant block's dominates; with the plain mean the
+        # stiff cylinder's cell stress cycles, residual 8e-7): Hertz with
+        # the block's E*, 53 correctors (LM 96)
+        if "nitsche" in list_methods():
+            print("== hertzCylinder -materials nearRigidCylinder -slave block, nitsche,"
+                  " weights stiffness", flush=True)
+            tutorial_case(res, "hertzCylinder", "hertzCylinder_nearRigid_blockSlave_nitsche",
+                          ["-method", "nitsche", "-materials", "nearRigidCylinder",
+                           "-slave", "block"],
+                          edit=lambda case: set_coeff(case, "weights", "stiffness"))
         # The 1000:1 patch test with the soft block as the slave
         for method in ("lagrangeMultiplier", "penalty"):
             print("== contactPatchTest -materials stiffUpper (1000:1), %s" % method, flush=True)

@@ -55,6 +55,9 @@ METHOD_CHECKS = {
     "lagrangeMultiplier": dict(kind="exact"),
     "augmentedLagrange": dict(kind="exact"),
     "crossConstraint": dict(kind="exact"),
+    "directElimination": dict(kind="exact"),
+    # consistent: exact for every gamma0 (the cells' stress is the face's)
+    "nitsche": dict(kind="exact"),
     "penalty": dict(kind="penalty", scale="penaltyScale"),
     "constitutiveLaw": dict(kind="constitutive"),
     "perturbedLagrange": dict(kind="penalty", scale="penaltyScale"),

@@ -480,6 +480,23 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     state.reaction = pressure_;
     state.inRange = pair_->inRange();
     state.stiffness = state.K/state.h;
+    if (method_->usesCellStress())
+    {
+        // The cells' own stress, not the face value the last traction set
+        state.cellStress =
+            solidPatchTractions::sigma(patch()).patchInternalField();
+        state.masterCellStress = pair_->slaveValues
+        (
+            solidPatchTractions::sigma(master.patch()).patchInternalField()()
+        );
+        const fvPatch& mp = master.patch();
+        const scalarField masterKh
+        (
+            solidPatchTractions::impK(mp)*mp.magSf()
+           /scalarField(mesh.V().field(), mp.faceCells())
+        );
+        state.masterStiffness = pair_->slaveValues(masterKh);
+    }
 
     // 4. The method's decision
     method_->correct(state, cond_);

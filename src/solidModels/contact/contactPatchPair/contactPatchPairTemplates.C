@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "Pstream.H"
+#include "consistentTransfer.H"
 
 template<class Type>
 Foam::tmp<Foam::Field<Type>> Foam::contactPatchPair::gatherMaster
@@ -57,4 +58,47 @@ Foam::tmp<Foam::Field<Type>> Foam::contactPatchPair::sumOverProcessors
         Pstream::listCombineScatter(tsum.ref(), tag);
     }
     return tsum;
+}
+
+
+template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::contactPatchPair::slaveValues
+(
+    const UList<Type>& masterLocal
+) const
+{
+    const Field<Type> all(gatherMaster(masterLocal));
+
+    std::vector<std::vector<int>> faces(overlapFaces_.size());
+    std::vector<std::vector<double>> weights(overlapFaces_.size());
+    forAll(overlapFaces_, facei)
+    {
+        faces[facei].assign
+        (
+            overlapFaces_[facei].begin(), overlapFaces_[facei].end()
+        );
+        weights[facei].assign
+        (
+            overlapWeights_[facei].begin(), overlapWeights_[facei].end()
+        );
+    }
+
+    tmp<Field<Type>> tf(new Field<Type>(overlapFaces_.size(), Zero));
+    Field<Type>& f = tf.ref();
+    for (direction d = 0; d < pTraits<Type>::nComponents; ++d)
+    {
+        const scalarField cmpt(all.component(d));
+        const std::vector<double> fd
+        (
+            c4f::transfer::consistentTransfer
+            (
+                faces, weights, std::vector<double>(cmpt.begin(), cmpt.end())
+            )
+        );
+        forAll(f, facei)
+        {
+            setComponent(f[facei], d) = fd[facei];
+        }
+    }
+    return tf;
 }
