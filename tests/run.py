@@ -61,11 +61,15 @@ PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 #   contactPatchTest3D: comparePatchTest3D.py, by the kind of answer each
 #     method gives (c4fpost.patchtest.METHOD_CHECKS: exact to 1e-6, the
 #     penalty's series-spring offset, the constitutive law's series
-#     solution and penetration); its list is that table's.
-#   barrier (contactPatchTest, hertzCylinder; Allrun opens the initial gap
-#     it needs): the series solution with the barrier law and its uniform
-#     gap to 1e-6 (c4fpost.patchtest.barrier_solution); Hertz's
-#     tolerances; and every corrector's smallest gap > 0 (barrier_gaps_open).
+#     solution and penetration, the barrier's series solution and gap);
+#     its list is that table's.
+#   barrier (contactPatchTest, contactPatchTest3D, hertzCylinder; Allrun
+#     opens the initial gap it needs): the series solution with the
+#     barrier law and its uniform gap to 1e-6
+#     (c4fpost.patchtest.barrier_solution); Hertz's tolerances; every
+#     corrector's smallest gap > 0 (barrier_gaps_open); in 3D the gap the
+#     run starts from is the lift along the (turned) normal
+#     (barrier_initial_gap).
 CHECKED_METHODS = {
     "contactPatchTest": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
                          "crossConstraint", "constitutiveLaw", "perturbedLagrange",
@@ -74,15 +78,6 @@ CHECKED_METHODS = {
                       "crossConstraint", "constitutiveLaw", "perturbedLagrange",
                       "directElimination", "nitsche", "barrier"),
     "contactPatchTest3D": tuple(patchtest.METHOD_CHECKS),
-}
-# Methods a tutorial cannot run yet, each with the reason; printed as a
-# NOTE, not run (anything else of -listMethods without a check FAILs)
-NOT_CHECKED = {
-    "contactPatchTest3D": {
-        "barrier": "needs an open start; contactPatchTest3D's Allrun has no -gap yet (it must"
-                   " lift the upper block along the normal that -rotate turns) and"
-                   " comparePatchTest3D.py no barrier answer (c4fpost.patchtest)",
-    },
 }
 WORK = os.path.join(PREFIX, "run", "tests")
 
@@ -136,11 +131,8 @@ def checked_methods(res, tutorial, methods):
     """The methods of the table that `tutorial` has a check for; every
     other one is a FAIL (a method in the table with no closed-form check)."""
     known = CHECKED_METHODS[tutorial]
-    excluded = NOT_CHECKED.get(tutorial, {})
     for m in methods:
-        if m in excluded:
-            print("NOTE %s_%s not run: %s" % (tutorial, m, excluded[m]), flush=True)
-        elif m not in known:
+        if m not in known:
             res.add("%s_%s/closed_form_check" % (tutorial, m), False,
                     note="method %s is in solidContactFoam -listMethods but tests/run.py has"
                          " no closed-form check for it on %s (CHECKED_METHODS)" % (m, tutorial))
@@ -256,6 +248,22 @@ def barrier_gaps_open(res, case, name):
                ", ".join("%.3g" % g for g in final)))
 
 
+def barrier_initial_gap(res, case, name, gap):
+    """The barrier's first corrector starts from the lift Allrun -gap
+    gave (flat surfaces: every gap equals it, along the normal that
+    -rotate turns; a lift along the unturned axis would leave cos of the
+    angle between them, 0.95 here): its line 'barrier dhat = ... min gap
+    = g m' against `gap`, to 1e-6 (the rotated points carry 12 digits)."""
+    text = open(os.path.join(case, "log.solidContactFoam")).read()
+    m = re.search(r"barrier dhat = .* min gap = (\S+) m", text)
+    if not m:
+        res.add(name + "/initial_gap", False, note="no barrier start line in the log")
+        return
+    g = float(m.group(1))
+    err = abs(g - gap) / gap
+    res.add(name + "/initial_gap", err <= 1e-6, g, gap, err, 1e-6)
+
+
 def accept_unconverged(res):
     """onNonConvergence continue: a step cut short at 3 correctors is
     written, the log warns, and contactReport says converged = 0."""
@@ -339,6 +347,37 @@ def restart_reproduces(res, finished, name, max_correctors=5):
             max_correctors - 2)
     err = abs(f2 - f1) / abs(f1)
     res.add(name + "/normal_force_equals_step_1", err <= 1e-6, f2, f1, err, 1e-6)
+
+
+def barrier_kappa_carried(res, finished, name, patch, ref=None):
+    """The barrier's per-face kappa (barrierStiffness, the method's state
+    in the slave's entry of D) survives: the restart of `finished`
+    (restart_reproduces, `finished`_restart) ends its step with the
+    written kappa, face by face, and no doubling (the gap it starts from
+    is the converged one); with `ref`, `finished`'s kappa equals that run's
+    (a reconstructed parallel run against the serial one: decomposePar and
+    reconstructPar map it face by face). Exact to the 12 written digits:
+    tolerance 1e-10."""
+    def kappa(case):
+        time = foamio.latest_time(case)
+        n = foamio.patch_face_cells(case, patch).size
+        return time, np.asarray(foamio.read_patch(os.path.join(case, time, "D"), patch, n,
+                                                  key="barrierStiffness"))
+    restart = finished + "_restart"
+    if not os.path.isdir(restart):
+        res.add(name + "/kappa_carried", False, note="no restart case %s" % restart)
+        return
+    t1, k1 = kappa(finished)
+    t2, k2 = kappa(restart)
+    err = float(np.abs(k2 - k1).max() / np.abs(k1).max()) if k1.shape == k2.shape else 1.0
+    res.add(name + "/kappa_carried", t2 != t1 and err <= 1e-10, err, 0.0, err, 1e-10)
+    row = contactreport.last_row(restart, patch) or {}
+    res.add(name + "/no_kappa_update", row.get("multiplierUpdates") == 0,
+            note="(multiplierUpdates %s)" % row.get("multiplierUpdates"))
+    if ref is not None:
+        _, k0 = kappa(ref)
+        err = float(np.abs(k1 - k0).max() / np.abs(k0).max()) if k0.shape == k1.shape else 1.0
+        res.add(name + "/kappa_equals_serial", err <= 1e-10, err, 0.0, err, 1e-10)
 
 
 def stress_fields_agree(res, ref, case, name, tol):
@@ -599,6 +638,16 @@ def main():
             res.add("contactPatchTest_barrier_kappaUpdate/kappa_doubled",
                     row.get("multiplierUpdates", 0) >= 1,
                     note="(multiplierUpdates %s)" % row.get("multiplierUpdates"))
+            # Its restart at the same load: with the doubled kappa read back
+            # (barrierStiffness in the slave's entry of D) the converged
+            # step continues in 1 corrector with no doubling (measured);
+            # a lost kappa would start from kappaScale K/h, whose gap is
+            # half the written one, and double it again in ~30 correctors
+            print("== contactPatchTest: barrier restart with the doubled kappa", flush=True)
+            restart_reproduces(res, soft, "contactPatchTest_barrier_kappaUpdateRestart",
+                               max_correctors=3)
+            barrier_kappa_carried(res, soft, "contactPatchTest_barrier_kappaUpdateRestart",
+                                  "lowerTop")
         # n = 1 is the penalty with eps = cN: eps = penaltyScale K/h of the
         # tutorial's penalty (10 x 1e6 Pa / 0.1 m); the same stress field to
         # 1e-6 (both stop at residual 1e-9)
@@ -649,7 +698,12 @@ def main():
             tag = "".join(o.lstrip("-").replace(".", "") for o in opts)
             name = "contactPatchTest3D_%s%s" % (method, ("_" + tag) if tag else "")
             print("== contactPatchTest3D: %s %s" % (method, " ".join(opts)), flush=True)
-            tutorial_case(res, "contactPatchTest3D", name, ["-method", method] + opts)
+            case = tutorial_case(res, "contactPatchTest3D", name, ["-method", method] + opts,
+                                 controls="verbose yes;" if method == "barrier" else "")
+            if method == "barrier":
+                # Allrun's default lift with -method barrier (half its dhat)
+                barrier_initial_gap(res, case, name, 5e-4)
+                barrier_gaps_open(res, case, name)
 
     if want("hertzCylinder"):
         cases = {}
@@ -693,6 +747,27 @@ def main():
                   flush=True)
             restart_reproduces(res, alpar, "hertzCylinderReconstructedRestart",
                                max_correctors=3)
+        # The barrier on 2 processors: its per-face kappa and dhat (the
+        # default is reduced over processors) are the serial run's, so
+        # force and peak agree like LM's runs (measured 2e-9, 61
+        # correctors against 63); every corrector's gaps stay open; the
+        # reconstructed case restarted in serial continues its converged
+        # step (measured 1 corrector) with the kappa reconstructPar mapped
+        if "barrier" in cases:
+            print("== hertzCylinder: barrier on 2 processors", flush=True)
+            bpar = tutorial_case(res, "hertzCylinder", "hertzCylinderParallel_barrier",
+                                 ["-method", "barrier", "-parallel"], controls="verbose yes;")
+            if os.path.exists(os.path.join(bpar, "log.solidContactFoam")):
+                decomposed(res, bpar, "hertzCylinderParallel_barrier/decomposed", 2)
+                barrier_gaps_open(res, bpar, "hertzCylinderParallel_barrier")
+                contact_serial_parallel_agree(res, cases["barrier"], bpar,
+                                              "hertzCylinderParallel_barrier", 1e-6)
+                print("== hertzCylinder: barrier, serial restart of the reconstructed case",
+                      flush=True)
+                restart_reproduces(res, bpar, "hertzCylinderReconstructedRestart_barrier",
+                                   max_correctors=3)
+                barrier_kappa_carried(res, bpar, "hertzCylinderReconstructedRestart_barrier",
+                                      "cylinderContact", ref=cases["barrier"])
         if "constitutiveLaw" in cases:
             constitutive_law_spreads(res, cases["constitutiveLaw"])
         # Unloading (Allrun -unload: loaded, half the approach, lifted

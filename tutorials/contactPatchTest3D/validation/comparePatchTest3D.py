@@ -83,6 +83,17 @@ penetrating by (|sigma|/cN)^(1/n); the stress against that everywhere, its
 spread and every face's penetration against the law, all to 1e-6 (the law
 is exact and the state uniform, as the 2D patch test checks it).
 
+barrier (the clamped log barrier, dhat of barrierCoeffs, 1e-3 m = 1e-2 h,
+or 1e-3 of the largest slave h; kappa the written field barrierStiffness;
+Allrun opens an initial gap of 5e-4 m by lifting the upper box along its
+normal, the applied displacement unchanged): the boxes stay apart by a uniform gap
+d, so the column is shortened by Delta + d in uniaxial stress (modulus E):
+|sigma| L/E = Delta + d with p(d) = |sigma|
+(c4fpost.patchtest.barrier_solution). Checks: every cell's sigma'_zz
+equals -|sigma| and is uniform, every slave face's gap equals d (to 1e-6
+of max(d, 1e-3 Delta)), all to 1e-6 as the exact methods, and every gap
+is open.
+
 Contact variants, also: the total normal force on the slave patch,
 sum_f p_f |Sf_f|, against |sigma| (exact or penalty) times the patch area
 (1 m2), with the same tolerance as the stress; and, when the contactReport
@@ -219,6 +230,8 @@ def no_result(case, contact, method, why):
         names = ["szz_penalty_offset", "szz_uniformity"]
     elif kind == "constitutive":
         names = ["szz_constitutive_law", "szz_uniformity", "penetration_law"]
+    elif kind == "barrier":
+        names = ["szz_barrier_law", "szz_uniformity", "gap_barrier_law", "gap_open"]
     else:
         names = ["szz_max_rel_error"]
     checks = [dict(name="%s/%s" % (NAME, n), value=inf, reference=0.0, error=inf,
@@ -276,6 +289,9 @@ def compare(case):
     elif kind == "constitutive":
         stress, predicted, forceTol = TEST.constitutive_checks(case, time, res, "szz", szz, E,
                                                                Cf.shape[0], method)
+    elif kind == "barrier":
+        stress, predicted, forceTol = TEST.barrier_checks(case, time, res, "szz", szz, E,
+                                                          Cf.shape[0], h, method)
     else:
         stress, predicted, forceTol = TEST.stress_checks(
             case, res, "szz", kind == "penalty", E, K, h, method,
@@ -320,8 +336,8 @@ def plot(res, png):
     plt = patchtest.pyplot()
     ex = abs(res["exact"])
     # the predicted stress where it is not the exact one
-    penalty = res["kind"] in ("penalty", "constitutive")
-    label = ("series prediction (interface law)" if res["kind"] == "constitutive"
+    penalty = res["kind"] in ("penalty", "constitutive", "barrier")
+    label = ("series prediction (interface law)" if res["kind"] in ("constitutive", "barrier")
              else "penalty prediction")
     what = "%s%s, nu = %g" % (res["method"] if res["contact"] else "no contact",
                                ", rotated" if res["rotated"] else "", res["nu"])
@@ -382,6 +398,10 @@ def main():
               " (expected (sigma/cN)^(1/n) = %.9g m)"
               % (res["cN"], res["n"], res["predicted"], res["penetration"],
                  res["penetrationRef"]))
+    if res["kind"] == "barrier":
+        print("  barrier dhat = %g m, kappa = %g Pa/m: sigma = %.9g Pa, gap %.9g m"
+              " (expected d = %.9g m)"
+              % (res["dhat"], res["kappa"], res["predicted"], res["gap"], res["gapRef"]))
     print("  max |sigma'_ij|/|exact|: " + ", ".join("%s %.3g" % kv for kv in res["others"].items()))
     if res["contact"]:
         TEST.print_force(res)
