@@ -5,7 +5,6 @@
 #include "solidContactFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
-#include "volPointInterpolation.H"
 #include "emptyFvPatch.H"
 #include "wedgeFvPatch.H"
 #include "solidPatchTractions.H"
@@ -450,13 +449,8 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     }
 
     // 1. Both surfaces in the current configuration, and the projection
-    const volVectorField& D =
-        db().lookupObject<volVectorField>(internalField().name());
-    const tmp<pointVectorField> tpointD =
-        volPointInterpolation::New(mesh).interpolate(D);
-
     const vectorField Df(*this);
-    pair_->update(master, Df, tpointD());
+    pair_->update(master, Df);
 
     // 2. The reaction of the current state, from its face values and
     // gradient: the last solve's pressure, or the pressure of the state
