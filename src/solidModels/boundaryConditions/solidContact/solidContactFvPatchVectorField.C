@@ -474,6 +474,17 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     state.reaction = pressure_;
     state.inRange = pair_->inRange();
     state.stiffness = state.K/state.h;
+    {
+        const fvPatch& mp = master.patch();
+        const scalarField masterKh
+        (
+            solidPatchTractions::impK(mp)*mp.magSf()
+           /scalarField(mesh.V().field(), mp.faceCells())
+        );
+        state.masterStiffness = pair_->slaveValues(masterKh);
+        state.pairStiffness =
+            1.0/(1.0/state.stiffness + 1.0/max(state.masterStiffness, SMALL));
+    }
     if (method_->usesCellStress())
     {
         // The cells' own stress, not the face value the last traction set
@@ -483,13 +494,6 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
         (
             solidPatchTractions::sigma(master.patch()).patchInternalField()()
         );
-        const fvPatch& mp = master.patch();
-        const scalarField masterKh
-        (
-            solidPatchTractions::impK(mp)*mp.magSf()
-           /scalarField(mesh.V().field(), mp.faceCells())
-        );
-        state.masterStiffness = pair_->slaveValues(masterKh);
     }
 
     // 4. The method's decision
@@ -1077,13 +1081,8 @@ Foam::scalar Foam::solidContactFvPatchVectorField::stepLimit()
 
     // The gaps at the current D (the update's), by the same search as a
     // corrector's; lastState_ holds those the corrector started from
-    const fvMesh& mesh = patch().boundaryMesh().mesh();
-    const volVectorField& D =
-        db().lookupObject<volVectorField>(internalField().name());
-    const tmp<pointVectorField> tpointD =
-        volPointInterpolation::New(mesh).interpolate(D);
     const vectorField Df(*this);
-    pair_->update(shadow(), Df, tpointD());
+    pair_->update(shadow(), Df);
 
     const scalar alpha = returnReduce
     (
