@@ -863,11 +863,24 @@ def main():
                           ["-method", "nitsche", "-materials", "nearRigidCylinder",
                            "-slave", "block"],
                           edit=lambda case: set_coeff(case, "weights", "stiffness"))
-        # The 1000:1 patch test with the soft block as the slave
+        # The 1000:1 patch test with the soft block as the slave, and with
+        # the stiff one (7 coarse slave faces on 10 master faces): both
+        # converge to the same answer (the Lagrange multiplier's active-set
+        # constant from both half cells in series, the deferred correction
+        # solved to its fixed point; see DEVELOPERS.md)
         for method in ("lagrangeMultiplier", "penalty"):
             print("== contactPatchTest -materials stiffUpper (1000:1), %s" % method, flush=True)
             tutorial_case(res, "contactPatchTest", "contactPatchTest_stiffUpper_" + method,
                           ["-method", method, "-materials", "stiffUpper"])
+            print("== contactPatchTest -materials stiffUpper -slave upper, %s" % method,
+                  flush=True)
+            tutorial_case(res, "contactPatchTest", "contactPatchTest_stiffUpperSlave_" + method,
+                          ["-method", method, "-materials", "stiffUpper", "-slave", "upper"])
+        # The coarse slave, like materials: 7 slave faces on 10 master faces
+        for method in ("lagrangeMultiplier", "penalty"):
+            print("== contactPatchTest -slave upper (coarse slave), %s" % method, flush=True)
+            tutorial_case(res, "contactPatchTest", "contactPatchTest_upperSlave_" + method,
+                          ["-method", method, "-slave", "upper"])
 
     if want("hertzSphere"):
         # Hertz in 3D, the quarter model on its tutorial mesh (10 slave

@@ -78,6 +78,38 @@ NormalLawValue constitutivePressure
 }
 
 
+double constitutiveGapForPressure
+(
+    const double pressure,
+    const double cN,
+    const double n
+)
+{
+    // isgreater: a quiet comparison, NaN raises no invalid-operation flag
+    if (!std::isgreater(pressure, 0.0) || std::isinf(pressure))
+    {
+        return std::isinf(pressure) && pressure > 0 ? -DBL_MAX : 0.0;
+    }
+    // (p/c_N)^(1/n), range-checked in logarithms: p/c_N may underflow (a
+    // stiff law) or overflow where its n-th root does not
+    const double logRatio = std::log(pressure) - std::log(cN);
+    const double logResult = logRatio/n;
+    if (logResult < logFloor)
+    {
+        return 0.0;
+    }
+    if (logResult > logCeiling)
+    {
+        return -DBL_MAX;
+    }
+    if (std::abs(logRatio) < 700.0)
+    {
+        return -std::pow(pressure/cN, 1.0/n);
+    }
+    return -std::exp(logResult);
+}
+
+
 bool validConstitutiveLaw(const double cN, const double n)
 {
     return

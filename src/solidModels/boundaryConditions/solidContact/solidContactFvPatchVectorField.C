@@ -5,7 +5,6 @@
 #include "solidContactFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
-#include "volPointInterpolation.H"
 #include "emptyFvPatch.H"
 #include "wedgeFvPatch.H"
 #include "solidPatchTractions.H"
@@ -450,13 +449,8 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     }
 
     // 1. Both surfaces in the current configuration, and the projection
-    const volVectorField& D =
-        db().lookupObject<volVectorField>(internalField().name());
-    const tmp<pointVectorField> tpointD =
-        volPointInterpolation::New(mesh).interpolate(D);
-
     const vectorField Df(*this);
-    pair_->update(master, Df, tpointD());
+    pair_->update(master, Df);
 
     // 2. The reaction of the current state, from its face values and
     // gradient: the last solve's pressure, or the pressure of the state
@@ -480,6 +474,17 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     state.reaction = pressure_;
     state.inRange = pair_->inRange();
     state.stiffness = state.K/state.h;
+    {
+        const fvPatch& mp = master.patch();
+        const scalarField masterKh
+        (
+            solidPatchTractions::impK(mp)*mp.magSf()
+           /scalarField(mesh.V().field(), mp.faceCells())
+        );
+        state.masterStiffness = pair_->slaveValues(masterKh);
+        state.pairStiffness =
+            1.0/(1.0/state.stiffness + 1.0/max(state.masterStiffness, SMALL));
+    }
     if (method_->usesCellStress())
     {
         // The cells' own stress, not the face value the last traction set
@@ -489,13 +494,6 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
         (
             solidPatchTractions::sigma(master.patch()).patchInternalField()()
         );
-        const fvPatch& mp = master.patch();
-        const scalarField masterKh
-        (
-            solidPatchTractions::impK(mp)*mp.magSf()
-           /scalarField(mesh.V().field(), mp.faceCells())
-        );
-        state.masterStiffness = pair_->slaveValues(masterKh);
     }
 
     // 4. The method's decision
@@ -1083,13 +1081,8 @@ Foam::scalar Foam::solidContactFvPatchVectorField::stepLimit()
 
     // The gaps at the current D (the update's), by the same search as a
     // corrector's; lastState_ holds those the corrector started from
-    const fvMesh& mesh = patch().boundaryMesh().mesh();
-    const volVectorField& D =
-        db().lookupObject<volVectorField>(internalField().name());
-    const tmp<pointVectorField> tpointD =
-        volPointInterpolation::New(mesh).interpolate(D);
     const vectorField Df(*this);
-    pair_->update(shadow(), Df, tpointD());
+    pair_->update(shadow(), Df);
 
     const scalar alpha = returnReduce
     (

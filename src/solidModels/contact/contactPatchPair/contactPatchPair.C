@@ -9,6 +9,7 @@
 #include "ListOps.H"
 #include "mergePoints.H"
 #include "boundBox.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -278,15 +279,62 @@ Foam::contactPatchPair::slavePolygon(const label facei) const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::contactPatchPair::moveSlave(const vectorField& slaveD)
+{
+    const polyPatch& pp = slave_.patch();
+    const polyMesh& mesh = pp.boundaryMesh().mesh();
+    const labelListList& pointFaces = pp.pointFaces();
+    const pointField& points = pp.localPoints();
+
+    // A point on a processor boundary takes the faces of every processor
+    // around it, so that a decomposed run sees the serial surface
+    if (slavePointWeights_.size() != pp.nPoints())
+    {
+        slavePointWeights_.setSize(pp.nPoints());
+        slavePointWeightSum_.setSize(pp.nPoints());
+        const vectorField& Cf = slave_.Cf();
+        forAll(pointFaces, pointi)
+        {
+            scalarList& w = slavePointWeights_[pointi];
+            w.setSize(pointFaces[pointi].size());
+            forAll(w, k)
+            {
+                w[k] =
+                    1/max(mag(Cf[pointFaces[pointi][k]] - points[pointi]), VSMALL);
+            }
+            slavePointWeightSum_[pointi] = sum(w);
+        }
+        syncTools::syncPointList
+        (
+            mesh, pp.meshPoints(), slavePointWeightSum_, plusEqOp<scalar>(),
+            scalar(0)
+        );
+    }
+
+    vectorField d(pp.nPoints(), Zero);
+    forAll(pointFaces, pointi)
+    {
+        forAll(pointFaces[pointi], k)
+        {
+            d[pointi] +=
+                slavePointWeights_[pointi][k]*slaveD[pointFaces[pointi][k]];
+        }
+    }
+    syncTools::syncPointList
+    (
+        mesh, pp.meshPoints(), d, plusEqOp<vector>(), vector(Zero)
+    );
+
+    slavePoints_ = points + d/slavePointWeightSum_;
+}
+
+
 void Foam::contactPatchPair::update
 (
     const vectorField& masterD,
-    const vectorField& slaveD,
-    const pointVectorField& pointD
+    const vectorField& slaveD
 )
 {
-    const pointField& meshPoints = slave_.boundaryMesh().mesh().points();
-
     if (masterRefFaces_.empty() && returnReduce(master_.size(), sumOp<label>()))
     {
         gatherMasterSurface();
@@ -314,10 +362,7 @@ void Foam::contactPatchPair::update
         ++nBuilds_;
     }
 
-    const labelList& smp = slave_.patch().meshPoints();
-    slavePoints_ =
-        pointField(meshPoints, smp)
-      + vectorField(pointD.primitiveField(), smp);
+    moveSlave(slaveD);
 
     const vectorField x(slave_.Cf() + slaveD);
 
@@ -378,7 +423,10 @@ void Foam::contactPatchPair::computeOverlaps()
         const std::vector<Eigen::Vector3d> poly(slavePolygon(facei));
 
         // Candidates: master faces near the slave polygon, the box grown by
-        // the gap so that an open or penetrated face still finds them
+        // the gap so that an open or penetrated face still finds them, and
+        // by half its size: the gap is that of the centre, and the master
+        // faces next to the hit face may lie farther from the polygon (a
+        // wavy master in the first correctors of a step, a curved one)
         Eigen::Vector3d lo(poly[0]), hi(poly[0]);
         for (const Eigen::Vector3d& p : poly)
         {
@@ -386,7 +434,7 @@ void Foam::contactPatchPair::computeOverlaps()
             hi = hi.cwiseMax(p);
         }
         const double grow =
-            mag(gap_[facei]) + staleness_ + 1e-6*(hi - lo).norm();
+            mag(gap_[facei]) + staleness_ + 0.05*(hi - lo).norm();
         lo.array() -= grow;
         hi.array() += grow;
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "outerCorrectorAcceleration.H"
+#include "processorSum.H"
 #include "Enum.H"
 #include "fixedGradientFvPatchFields.H"
 
@@ -21,16 +22,6 @@ const Foam::Enum<accelerationType> accelerationNames
     { accelerationType::anderson, "anderson" }
 });
 
-
-//- The kernel's parallel sum: the same bytes on every processor
-void sumOverProcessors(double* data, int count)
-{
-    Foam::List<Foam::scalar> l(count);
-    std::copy(data, data + count, l.begin());
-    Foam::Pstream::listCombineGather(l, Foam::plusEqOp<Foam::scalar>());
-    Foam::Pstream::listCombineScatter(l);
-    std::copy(l.begin(), l.end(), data);
-}
 
 } // End anonymous namespace
 
@@ -178,9 +169,7 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
         new c4f::coupling::AndersonAcceleration
         (
             p,
-            Pstream::parRun()
-          ? c4f::coupling::AndersonAcceleration::Reduction(sumOverProcessors)
-          : c4f::coupling::AndersonAcceleration::Reduction()
+            processorSumReduction()
         )
     );
 }

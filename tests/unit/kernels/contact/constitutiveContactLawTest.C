@@ -166,3 +166,52 @@ TEST(constitutiveContactLaw, validation)
     EXPECT_FALSE(validConstitutiveLaw(1.0, inf));
     EXPECT_NE(describeConstitutiveLawRequirement().find("positive"), std::string::npos);
 }
+
+TEST(constitutiveContactLaw, gapForPressureInvertsTheLaw)
+{
+    // Round trip g -> p(g) -> g over the laws and penetrations of the
+    // tutorials (stiff c_N 1e22 and soft 1e17 at n = 2, the 3D patch
+    // test's 1e10) and a sublinear and a steep exponent
+    for (const double cN : {1e10, 1e17, 1e22, 3e25})
+    {
+        for (const double n : {0.5, 1.0, 2.0, 3.33})
+        {
+            for (const double g : {-1e-2, -1e-5, -6e-7, -1e-9})
+            {
+                const double p = constitutivePressure(g, cN, n).pressure;
+                if (!(p > 1e3*DBL_MIN && p < DBL_MAX))
+                {
+                    continue;
+                }
+                EXPECT_NEAR(constitutiveGapForPressure(p, cN, n), g, 1e-12*std::abs(g))
+                    << "cN = " << cN << ", n = " << n << ", g = " << g;
+            }
+        }
+    }
+    // 1 MPa at 1 um for c_N = 1e18, n = 2
+    EXPECT_DOUBLE_EQ(constitutiveGapForPressure(1e6, 1e18, 2.0), -1e-6);
+}
+
+TEST(constitutiveContactLaw, gapForPressureDegenerateInputs)
+{
+    std::feclearexcept(FE_ALL_EXCEPT);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const double p : {0.0, -0.0, -1.0, -inf, nan})
+    {
+        EXPECT_EQ(constitutiveGapForPressure(p, 1e22, 2.0), 0.0) << "p = " << p;
+    }
+    for (const double n : {0.5, 2.0, 3.33})
+    {
+        for (const double cN : {1e-300, 1.0, 1e300})
+        {
+            for (const double p : {DBL_MIN, 1e-300, 1.0, 1e300, DBL_MAX})
+            {
+                const double g = constitutiveGapForPressure(p, cN, n);
+                EXPECT_TRUE(std::isfinite(g)) << p << " " << cN << " " << n;
+                EXPECT_LE(g, 0.0);
+            }
+        }
+    }
+    EXPECT_FALSE(std::fetestexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW));
+}

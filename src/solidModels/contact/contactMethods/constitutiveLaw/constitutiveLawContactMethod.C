@@ -118,9 +118,35 @@ void Foam::contactMethods::constitutiveLaw::correct
                 cond.coupled[facei] = true;
                 cond.compliance[facei] = 1/cN_;
             }
+            else if (cond.active[facei] && state.reaction[facei] > 0)
+            {
+                // n > 1, a face that carries pressure but whose gap has
+                // just opened (an overshooting corrector): the tangent at
+                // g >= 0 is zero, so the face is linearized at the gap its
+                // pressure implies. Released here, every face of
+                // hertzCylinder's contact let go at once after one
+                // Anderson step that left all gaps 2e-7 m open, and the
+                // step cycled.
+                const double gp =
+                    c4f::contact::constitutiveGapForPressure
+                    (
+                        state.reaction[facei], cN_, n_
+                    );
+                const c4f::contact::LinearizedNormalLaw lin =
+                    c4f::contact::linearizeNormalLaw
+                    (
+                        c4f::contact::constitutivePressure(gp, cN_, n_),
+                        gp
+                    );
+                cond.coupled[facei] = lin.coupled;
+                cond.compliance[facei] = lin.compliance;
+                cond.explicitPressure[facei] = lin.pressure0;
+                active = lin.coupled || lin.pressure0 > 0;
+            }
             else
             {
-                // n > 1: zero tangent and zero pressure: released
+                // n > 1 entering at g >= 0: zero tangent and zero
+                // pressure: not in contact
                 active = false;
             }
         }

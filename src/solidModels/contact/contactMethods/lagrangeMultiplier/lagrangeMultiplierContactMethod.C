@@ -51,7 +51,7 @@ void Foam::contactMethods::lagrangeMultiplier::correct
         const scalar lambda =
             cond.active[facei] ? state.reaction[facei] : 0;
 
-        const scalar c = activeSetScale_*state.stiffness[facei];
+        const scalar c = activeSetScale_*state.pairStiffness[facei];
 
         const bool active =
             state.inRange[facei]
