@@ -43,6 +43,13 @@ the stress error against the Lagrange multiplier answer, falling like
 1/eps, the difference to the penalty run with the same eps, and the
 multiplier updates and correctors (`run.py --only perturbedLagrange`).
 
+Every method side by side (`run.py --only methods`): each method of
+`solidContactFoam -listMethods` on hertzCylinder (correctors, wall time,
+p0 and a errors, max penetration or min gap, multiplier updates) and
+contactPatchTest (correctors, wall time, stress error against the exact
+stress), and the exact methods on hertzSphere at two mesh levels (10 and
+15 faces across a); markdown in methods.md, a bar chart in methods.png.
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
