@@ -92,14 +92,34 @@ void Foam::contactMethods::constitutiveLaw::correct
 
         if (active)
         {
-            if (g < 0)
+            // The point of the Newton step: the current gap; for a face
+            // that carries pressure but whose gap has just opened (n > 1,
+            // an overshooting corrector, where the tangent is zero) the
+            // gap its pressure implies. Released there instead, every face
+            // of hertzCylinder's contact let go at once after one Anderson
+            // step that left all gaps 2e-7 m open, and the step cycled.
+            scalar gStar = g;
+            if
+            (
+                !(g < 0) && n_ > 1
+             && cond.active[facei] && state.reaction[facei] > 0
+            )
             {
-                // The Newton step: the law's tangent at the current gap
+                gStar =
+                    c4f::contact::constitutiveGapForPressure
+                    (
+                        state.reaction[facei], cN_, n_
+                    );
+            }
+
+            if (gStar < 0)
+            {
+                // The Newton step: the law's tangent at gStar
                 const c4f::contact::LinearizedNormalLaw lin =
                     c4f::contact::linearizeNormalLaw
                     (
-                        c4f::contact::constitutivePressure(g, cN_, n_),
-                        g
+                        c4f::contact::constitutivePressure(gStar, cN_, n_),
+                        gStar
                     );
                 cond.coupled[facei] = lin.coupled;
                 cond.compliance[facei] = lin.compliance;
@@ -118,35 +138,10 @@ void Foam::contactMethods::constitutiveLaw::correct
                 cond.coupled[facei] = true;
                 cond.compliance[facei] = 1/cN_;
             }
-            else if (cond.active[facei] && state.reaction[facei] > 0)
-            {
-                // n > 1, a face that carries pressure but whose gap has
-                // just opened (an overshooting corrector): the tangent at
-                // g >= 0 is zero, so the face is linearized at the gap its
-                // pressure implies. Released here, every face of
-                // hertzCylinder's contact let go at once after one
-                // Anderson step that left all gaps 2e-7 m open, and the
-                // step cycled.
-                const double gp =
-                    c4f::contact::constitutiveGapForPressure
-                    (
-                        state.reaction[facei], cN_, n_
-                    );
-                const c4f::contact::LinearizedNormalLaw lin =
-                    c4f::contact::linearizeNormalLaw
-                    (
-                        c4f::contact::constitutivePressure(gp, cN_, n_),
-                        gp
-                    );
-                cond.coupled[facei] = lin.coupled;
-                cond.compliance[facei] = lin.compliance;
-                cond.explicitPressure[facei] = lin.pressure0;
-                active = lin.coupled || lin.pressure0 > 0;
-            }
             else
             {
-                // n > 1 entering at g >= 0: zero tangent and zero
-                // pressure: not in contact
+                // n > 1 at g >= 0 with no pressure carried: zero tangent
+                // and zero pressure, not in contact
                 active = false;
             }
         }
