@@ -234,9 +234,7 @@ void Foam::contactMethods::barrier::correct
         const scalar g = state.gap[facei];
 
         cond.pressure[facei] = carriedPressure(state, cond, facei);
-        cond.coupled[facei] = false;
-        cond.compliance[facei] = 0;
-        cond.explicitPressure[facei] = 0;
+        cond.clearLaw(facei);
 
         const bool active = state.inRange[facei] && g < dhat_;
         if (active)

@@ -86,9 +86,7 @@ void Foam::contactMethods::constitutiveLaw::correct
         }
 
         cond.pressure[facei] = carriedPressure(state, cond, facei);
-        cond.coupled[facei] = false;
-        cond.compliance[facei] = 0;
-        cond.explicitPressure[facei] = 0;
+        cond.clearLaw(facei);
 
         if (active)
         {

@@ -68,9 +68,7 @@ void Foam::contactMethods::crossConstraint::correct
             state.inRange[facei] && (cond.coupled[facei] || cond.active[facei])
           ? state.reaction[facei]
           : 0;
-        cond.coupled[facei] = false;
-        cond.compliance[facei] = 0;
-        cond.explicitPressure[facei] = 0;
+        cond.clearLaw(facei);
 
         bool active = false;
         if (state.inRange[facei])

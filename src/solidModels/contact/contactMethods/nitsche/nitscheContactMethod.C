@@ -77,9 +77,7 @@ void Foam::contactMethods::nitsche::correct
             c4f::contact::nitschePressure(state.gap[facei], sigmaN, gamma);
 
         cond.pressure[facei] = carriedPressure(state, cond, facei);
-        cond.coupled[facei] = false;
-        cond.compliance[facei] = 0;
-        cond.explicitPressure[facei] = 0;
+        cond.clearLaw(facei);
 
         const bool active =
             state.inRange[facei]

@@ -74,9 +74,7 @@ void Foam::contactMethods::penalty::correct
     forAll(state.gap, facei)
     {
         bool active = false;
-        cond.coupled[facei] = false;
-        cond.compliance[facei] = 0;
-        cond.explicitPressure[facei] = 0;
+        cond.clearLaw(facei);
 
         if (!state.inRange[facei])
         {
