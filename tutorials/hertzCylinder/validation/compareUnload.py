@@ -102,18 +102,6 @@ def check(name, value, reference, error, tolerance, units="", passed=None):
                 passed=bool(error <= tolerance) if passed is None else bool(passed))
 
 
-def times(case):
-    out = []
-    for d in os.listdir(case):
-        try:
-            t = float(d)
-        except ValueError:
-            continue
-        if t > 0 and os.path.isdir(os.path.join(case, d)):
-            out.append((t, d))
-    return [d for _, d in sorted(out)]
-
-
 def eps_of_faces(case, slave, method):
     """eps = penaltyScale K/h of every slave face (uzawaMethod's), or None
     for a method without it."""
@@ -198,7 +186,7 @@ def multiplier_checks(case, slave, method, rows, mult, Cf, area):
 
 
 def compare(case, estar="both"):
-    ts = times(case)
+    ts = foamio.times(case)
     if ts[:3] != [LOADED, HALF, LIFTED]:
         raise RuntimeError("expected the times 1 2 3 of Allrun -unload in %s, found %s"
                            % (case, ts))

@@ -14,17 +14,16 @@ def _start_time_key(name):
         return -1.0
 
 
-def rows(case, patch):
-    """Every row of the slave patch's report, as dicts keyed by the column
-    names of the '#' header (COLUMNS where there is none), in file order,
-    the start-time directories in time order (a restart's rows after the
-    run's it continues); [] where there is no report."""
+def _records(case, filename, key):
+    """(column names, values) of every data line of the report file
+    `filename` in each start-time directory, in time order (a restart's
+    lines after the run's it continues); the names come from the last '#'
+    header line that holds the column `key`, None before one."""
     base = os.path.join(case, "postProcessing", "contactReport")
     if not os.path.isdir(base):
-        return []
-    out = []
+        return
     for d in sorted(os.listdir(base), key=_start_time_key):
-        path = os.path.join(base, d, patch + ".dat")
+        path = os.path.join(base, d, filename)
         if not os.path.exists(path):
             continue
         names = None
@@ -34,16 +33,26 @@ def rows(case, patch):
                 continue
             if s.startswith("#"):
                 words = s.lstrip("#").split()
-                if "normalForce" in words:
+                if key in words:
                     names = words
                 continue
-            row = {}
-            for k, v in zip(names or COLUMNS, s.split()):
-                try:
-                    row[k] = float(v)
-                except ValueError:
-                    pass
-            out.append(row)
+            yield names, s.split()
+
+
+def rows(case, patch):
+    """Every row of the slave patch's report, as dicts keyed by the column
+    names of the '#' header (COLUMNS where there is none), in file order,
+    the start-time directories in time order (a restart's rows after the
+    run's it continues); [] where there is no report."""
+    out = []
+    for names, values in _records(case, patch + ".dat", "normalForce"):
+        row = {}
+        for k, v in zip(names or COLUMNS, values):
+            try:
+                row[k] = float(v)
+            except ValueError:
+                pass
+        out.append(row)
     return out
 
 
@@ -68,24 +77,10 @@ def multipliers(case, patch):
     the column names (time, update, x, y, z, gap, pressure, multiplier),
     one entry per face and update; None where there is no such file."""
     import numpy as np
-    base = os.path.join(case, "postProcessing", "contactReport")
-    if not os.path.isdir(base):
-        return None
     names, data = None, []
-    for d in sorted(os.listdir(base), key=_start_time_key):
-        path = os.path.join(base, d, patch + "Multipliers.dat")
-        if not os.path.exists(path):
-            continue
-        for line in open(path):
-            s = line.strip()
-            if not s:
-                continue
-            if s.startswith("#"):
-                words = s.lstrip("#").split()
-                if "multiplier" in words:
-                    names = words
-                continue
-            data.append([float(v) for v in s.split()])
+    for header, values in _records(case, patch + "Multipliers.dat", "multiplier"):
+        names = header or names
+        data.append([float(v) for v in values])
     if not data or names is None:
         return None
     a = np.array(data)

@@ -130,16 +130,22 @@ def patch_face_cells(case, patch):
     return read_owner(case)[start:start + n]
 
 
-def latest_time(case):
-    """Name of the latest numeric time directory other than 0."""
-    times = []
+def times(case):
+    """Names of the numeric time directories other than 0, in time order."""
+    out = []
     for d in os.listdir(case):
         try:
             t = float(d)
         except ValueError:
             continue
         if t > 0 and os.path.isdir(os.path.join(case, d)):
-            times.append((t, d))
-    if not times:
+            out.append((t, d))
+    return [d for _, d in sorted(out)]
+
+
+def latest_time(case):
+    """Name of the latest numeric time directory other than 0."""
+    ts = times(case)
+    if not ts:
         raise FileNotFoundError("no time directory in %s" % case)
-    return max(times)[1]
+    return ts[-1]
