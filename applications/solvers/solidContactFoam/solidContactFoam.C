@@ -89,7 +89,8 @@ Usage
     \endtable
 
     `solidContactFoam -listMethods` prints the contact methods of the
-    run-time selection table, one per line.
+    run-time selection table, one per line; `-listFrictionModels` the
+    friction models.
 
     \verbatim
     solidMechanics
@@ -111,6 +112,7 @@ Usage
 #include "materialInterfaces.H"
 #include "contactStateReporter.H"
 #include "contactMethod.H"
+#include "frictionModel.H"
 #include "contactFvMesh.H"
 #include "outerCorrectorAcceleration.H"
 
@@ -129,18 +131,28 @@ int main(int argc, char *argv[])
         " `method` entry), one per line, and exit"
     );
 
+    argList::addBoolOption
+    (
+        "listFrictionModels",
+        "print the friction models (the values of a solidContact slave's"
+        " `friction` entry), one per line, and exit"
+    );
+
     // Tutorials, tests and benchmarks take the method list from here: it
     // is the run-time selection table, so a new method is found by all.
     // Printed before argList's banner, so that it is the whole output
     for (int i = 1; i < argc; ++i)
     {
-        if (std::string(argv[i]) == "-listMethods")
+        const std::string opt(argv[i]);
+        if (opt == "-listMethods" || opt == "-listFrictionModels")
         {
-            for
+            const wordList names
             (
-                const word& m
-              : contactMethod::dictionaryConstructorTablePtr_->sortedToc()
-            )
+                opt == "-listMethods"
+              ? contactMethod::dictionaryConstructorTablePtr_->sortedToc()
+              : frictionModel::dictionaryConstructorTablePtr_->sortedToc()
+            );
+            for (const word& m : names)
             {
                 std::cout << m << '\n';
             }

@@ -283,11 +283,23 @@ Foam::solidContactFvPatchVectorField::defaultSearchDistance() const
 void Foam::solidContactFvPatchVectorField::initSlave()
 {
     method_ = contactMethod::New(patch(), dict_);
+    friction_ = frictionModel::New(patch(), dict_);
+    if (friction_->slips() && !method_->allowsSlip())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'friction " << friction_->frictionName() << "' of "
+            << dict_.name() << " with method " << method_->methodName()
+            << ": this method has no slip law (a regularised multiplier"
+            << " cannot carry a slip traction; Wriggers 2006, remark"
+            << " 2.7.3); valid friction models with it are frictionless"
+            << " and stick" << exit(FatalIOError);
+    }
     cond_.setSize(patch().size());
 
     // A restart continues from the written active set, pressure and the
-    // method's state
+    // method's and friction model's state
     method_->state().read(dict_);
+    friction_->state().read(dict_);
     if (dict_.found("contactPressure"))
     {
         cond_.pressure = scalarField("contactPressure", dict_, patch().size());
@@ -322,14 +334,22 @@ void Foam::solidContactFvPatchVectorField::setOutputFields
     outputField<scalar>(mesh, "contactActive", dimless)
         .boundaryFieldRef()[patchi] == active;
 
-    // The method's state, where it has one (e.g. contactMultiplier)
+    // The method's and the friction model's state, where they have one
+    // (e.g. contactMultiplier, contactStick, contactSlip)
     if (method_.valid())
     {
-        const contactFaceState& ms = method_->state();
-        for (const word& name : ms.names())
+        for (const contactFaceState* ms : {&method_->state(), &friction_->state()})
         {
-            outputField<scalar>(mesh, name, ms.dimensions(name))
-                .boundaryFieldRef()[patchi] == ms[name];
+            for (const word& name : ms->names<scalar>())
+            {
+                outputField<scalar>(mesh, name, ms->dimensions<scalar>(name))
+                    .boundaryFieldRef()[patchi] == ms->field<scalar>(name);
+            }
+            for (const word& name : ms->names<vector>())
+            {
+                outputField<vector>(mesh, name, ms->dimensions<vector>(name))
+                    .boundaryFieldRef()[patchi] == ms->field<vector>(name);
+            }
         }
     }
 }
@@ -430,6 +450,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
 
     const solidContactFvPatchVectorField& master = shadow();
 
+    const bool newStep = nCorrectors_ == 1;
     const bool firstUpdate = !pair_.valid();
     if (firstUpdate)
     {
@@ -472,6 +493,8 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     state.h = cellSizeNormal();
     state.delta = 1.0/patch().deltaCoeffs();
     state.reaction = pressure_;
+    state.traction = traction_;
+    state.relative = Df - pair_->slaveValues(pair_->masterFaceDisplacement());
     state.inRange = pair_->inRange();
     state.stiffness = state.K/state.h;
     {
@@ -496,8 +519,15 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
         );
     }
 
-    // 4. The method's decision
+    // 4. The method's decision, then the friction model's on the faces the
+    // method coupled; a new load step first commits the friction history
+    // of the converged state it starts from
+    if (newStep)
+    {
+        friction_->beginStep(state, cond_);
+    }
     method_->correct(state, cond_);
+    friction_->correct(state, cond_);
     lastState_ = state;
 
     // 5. The coupling of this corrector
@@ -519,6 +549,12 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     in.slaveDf = Df;
     in.masterDf = pair_->masterFaceDisplacement();
     in.masterMagSf = pair_->gatherMaster(mp.magSf());
+    in.tied = cond_.tied;
+    if (friction_->hasTangentialLaw())
+    {
+        in.stickPoint = friction_->state().field<vector>("contactStickPoint");
+    }
+    in.tangentialTraction = cond_.tangentialTraction;
     in.D = &primitiveField();
 
     coupling_->set(in);
@@ -570,6 +606,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     normals_("faces"),
     rebuildTolerance_(0),
     method_(),
+    friction_(),
     pair_(),
     coupling_(),
     cond_(),
@@ -603,6 +640,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     normals_(dict.getOrDefault<word>("normals", "faces")),
     rebuildTolerance_(dict.getOrDefault<scalar>("rebuildTolerance", 0)),
     method_(),
+    friction_(),
     pair_(),
     coupling_(),
     cond_(),
@@ -645,12 +683,16 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
             pressure_ = -(traction_ & patch().nf());
         }
 
-        if (dict.found("method"))
+        for (const word slaveOnly : {"method", "friction"})
         {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'method' of " << dict.name() << " on the master"
-                << " patch: the method is chosen on the slave patch ("
-                << shadowPatchName_ << ", master no)" << exit(FatalIOError);
+            if (dict.found(slaveOnly))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry '" << slaveOnly << "' of " << dict.name()
+                    << " on the master patch: the " << slaveOnly
+                    << " is chosen on the slave patch (" << shadowPatchName_
+                    << ", master no)" << exit(FatalIOError);
+            }
         }
     }
     else
@@ -694,6 +736,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     normals_(ptf.normals_),
     rebuildTolerance_(ptf.rebuildTolerance_),
     method_(),
+    friction_(),
     pair_(),
     coupling_(),
     cond_(),
@@ -716,6 +759,8 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     {
         method_ = contactMethod::New(patch(), dict_);
         method_->state().map(ptf.method_->state(), mapper);
+        friction_ = frictionModel::New(patch(), dict_);
+        friction_->state().map(ptf.friction_->state(), mapper);
         cond_.setSize(p.size());
         if (ptf.cond_.pressure.size() == ptf.size())
         {
@@ -754,6 +799,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     normals_(ptf.normals_),
     rebuildTolerance_(ptf.rebuildTolerance_),
     method_(),
+    friction_(),
     pair_(),
     coupling_(),
     cond_(ptf.cond_),
@@ -772,6 +818,8 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     {
         method_ = contactMethod::New(patch(), dict_);
         method_->state() = ptf.method_->state();
+        friction_ = frictionModel::New(patch(), dict_);
+        friction_->state() = ptf.friction_->state();
     }
 }
 
@@ -966,12 +1014,16 @@ Foam::solidContactFvPatchVectorField::contactReport() const
         pair_.valid() ? pair_->normal() : vectorField(-patch().nf())
     );
 
+    // The tangential force is the resultant of the faces' tangential
+    // forces (the friction force Q of Cattaneo-Mindlin, the F_T of a
+    // sliding block), not the sum of their magnitudes
+    vector FT(Zero);
     forAll(A, facei)
     {
         const vector F(traction_[facei]*A[facei]);
         const scalar Fn = F & n[facei];
         r.normalForce += Fn;
-        r.tangentialForce += mag(F - Fn*n[facei]);
+        FT += F - Fn*n[facei];
         if (facei < cond_.active.size() && cond_.active[facei])
         {
             r.contactArea += A[facei];
@@ -985,7 +1037,8 @@ Foam::solidContactFvPatchVectorField::contactReport() const
         pair_.valid() ? minGapInRange(pair_->gap(), pair_->inRange()) : GREAT;
 
     reduce(r.normalForce, sumOp<scalar>());
-    reduce(r.tangentialForce, sumOp<scalar>());
+    reduce(FT, sumOp<vector>());
+    r.tangentialForce = mag(FT);
     reduce(r.contactArea, sumOp<scalar>());
     reduce(r.maxPressure, maxOp<scalar>());
     reduce(r.maxPenetration, maxOp<scalar>());
@@ -1113,6 +1166,7 @@ void Foam::solidContactFvPatchVectorField::autoMap
     if (!master_)
     {
         method_->state().autoMap(m);
+        friction_->state().autoMap(m);
         if (cond_.pressure.size())
         {
             scalarField am(activeFraction(cond_.active));
@@ -1144,6 +1198,7 @@ void Foam::solidContactFvPatchVectorField::rmap
     if (!master_ && p.cond_.pressure.size() == p.size())
     {
         method_->state().rmap(p.method_->state(), addr);
+        friction_->state().rmap(p.friction_->state(), addr);
 
         cond_.setSize(size());
         cond_.pressure.rmap(p.cond_.pressure, addr);
@@ -1169,6 +1224,15 @@ Foam::string Foam::solidContactFvPatchVectorField::contactState() const
         << "  maxPenetration = " << r.maxPenetration
         << "  minGap = " << r.minGap
         << "  changes = " << r.activeSetChanges;
+    if (friction_->hasTangentialLaw())
+    {
+        const scalarField& stick = friction_->state()["contactStick"];
+        os  << "  F_T = " << r.tangentialForce
+            << "  stick = "
+            << returnReduce(label(std::count(stick.begin(), stick.end(), 1.0)), sumOp<label>())
+            << "  slip = "
+            << returnReduce(label(std::count(stick.begin(), stick.end(), 0.0)), sumOp<label>());
+    }
     if (method_->updatesMultipliers())
     {
         os  << "  multiplierUpdates = " << r.multiplierUpdates;
@@ -1193,6 +1257,8 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
         os.writeEntry("method", method_->methodName());
         method_->write(os);
         os.writeEntry("normals", normals_);
+        os.writeEntry("friction", friction_->frictionName());
+        friction_->write(os);
         os.writeEntry("rebuildTolerance", rebuildTolerance_);
         if (dict_.found("searchDistance"))
         {
@@ -1204,6 +1270,7 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
             activeFraction(cond_.active).writeEntry("contactActive", os);
         }
         method_->state().write(os);
+        friction_->state().write(os);
     }
     gradient().writeEntry("gradient", os);
     writeEntry("value", os);

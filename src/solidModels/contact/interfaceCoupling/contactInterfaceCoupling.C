@@ -34,6 +34,22 @@ Foam::vector Foam::contactInterfaceCoupling::implicitWeights(const vector& n)
 }
 
 
+Foam::vector Foam::contactInterfaceCoupling::faceWeights(const label i) const
+{
+    return tied_[i] ? vector::one : implicitWeights(normal_[i]);
+}
+
+
+Foam::vector Foam::contactInterfaceCoupling::lawPart
+(
+    const label i,
+    const vector& v
+) const
+{
+    return tied_[i] ? v : vector(normal_[i]*(normal_[i] & v));
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactInterfaceCoupling::contactInterfaceCoupling
@@ -59,22 +75,30 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     nMaster_ = pair_.nMasterFaces();
     normal_ = in.normal;
     explicitForce_.setSize(slave.size());
+    tied_.setSize(slave.size());
+    forAll(tied_, i)
+    {
+        tied_[i] = in.coupled[i] && in.tied.size() && in.tied[i];
+    }
 
     DynamicList<label> start(slave.size() + 1);
     DynamicList<label> mf;
     DynamicList<scalar> coeff;
-    DynamicList<scalar> offset;
+    DynamicList<vector> offset;
     DynamicList<scalar> area;
     start.append(0);
 
     forAll(faces, i)
     {
         const vector& n = in.normal[i];
-        explicitForce_[i] = Zero;
+        explicitForce_[i] =
+            in.tangentialTraction.size()
+          ? vector(in.tangentialTraction[i]*magS[i])
+          : vector::zero;
 
         if (!in.coupled[i])
         {
-            explicitForce_[i] = in.pressure0[i]*n*magS[i];
+            explicitForce_[i] += in.pressure0[i]*n*magS[i];
         }
         else
         {
@@ -96,13 +120,35 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                 mf.append(j);
                 area.append(weights[i][k]*magS[i]);
                 coeff.append(area.last()*kij);
-                offset.append
-                (
-                   -gRef
-                  + rs*(in.slaveC[i] & n)
-                  - rm*(in.masterC[j] & n)
-                  + in.compliance[i]*in.pressure0[i]
-                );
+                if (tied_[i])
+                {
+                    // The vector gap G = gRef n - (I - n n) R_i + (D_fi -
+                    // sum_j w_ij D_fj) is zero in stick: held to the stick
+                    // point R_i of the step's start tangentially, closed
+                    // normally; the explicit tractions enter whole
+                    const vector& R = in.stickPoint[i];
+                    offset.append
+                    (
+                       -gRef*n
+                      + (R - n*(n & R))
+                      + rs*in.slaveC[i]
+                      - rm*in.masterC[j]
+                      + in.compliance[i]*in.pressure0[i]*n
+                    );
+                }
+                else
+                {
+                    offset.append
+                    (
+                        n
+                       *(
+                           -gRef
+                          + rs*(in.slaveC[i] & n)
+                          - rm*(in.masterC[j] & n)
+                          + in.compliance[i]*in.pressure0[i]
+                        )
+                    );
+                }
             }
         }
         start.append(mf.size());
@@ -138,13 +184,18 @@ void Foam::contactInterfaceCoupling::correctDeferred
     // affine map (Walker & Ni 2011) and needs about as many sweeps as the
     // map has distinct clusters of eigenvalues.
     const vectorField DM(masterCellValues(D));
-    const scalarList base(offset_);
-    std::vector<double> x(offset_.size(), 0.0), g(offset_.size()), xNext;
-    scalarList p;
+    const List<vector> base(offset_);
+    const label nSub = offset_.size();
+    std::vector<double> x(3*nSub, 0.0), g(3*nSub), xNext;
+    List<vector> p;
     vectorField F;
 
-    const scalar baseScale =
-        returnReduce(base.size() ? max(mag(base)) : 0, maxOp<scalar>());
+    scalar baseScale = 0;
+    for (const vector& b : base)
+    {
+        baseScale = max(baseScale, cmptMax(cmptMag(b)));
+    }
+    reduce(baseScale, maxOp<scalar>());
 
     c4f::coupling::AndersonParameters params;
     params.depth = maxDeferredDepth_;
@@ -159,7 +210,7 @@ void Foam::contactInterfaceCoupling::correctDeferred
     {
         forAll(offset_, s)
         {
-            offset_[s] = base[s] + x[s];
+            offset_[s] = base[s] + vector(x[3*s], x[3*s + 1], x[3*s + 2]);
         }
         slaveForces(D, DM, F, &p);
         const vectorField TM
@@ -170,11 +221,22 @@ void Foam::contactInterfaceCoupling::correctDeferred
         scalar change = 0;
         forAll(normal_, i)
         {
-            const vector& n = normal_[i];
             for (label s = start_[i]; s < start_[i+1]; ++s)
             {
-                g[s] = masterR[masterFace_[s]]*((TM[masterFace_[s]] & n) + p[s]);
-                change = max(change, mag(g[s] - x[s]));
+                // Delta_ij = r_j (t_j + t_ij), the part the law acts on
+                const vector d
+                (
+                    lawPart
+                    (
+                        i,
+                        masterR[masterFace_[s]]*(TM[masterFace_[s]] + p[s])
+                    )
+                );
+                for (direction c = 0; c < 3; ++c)
+                {
+                    g[3*s + c] = d[c];
+                    change = max(change, mag(g[3*s + c] - x[3*s + c]));
+                }
             }
         }
         ++nDeferredIter_;
@@ -207,30 +269,31 @@ void Foam::contactInterfaceCoupling::slaveForces
     const vectorField& D,
     const vectorField& DM,
     vectorField& F,
-    scalarList* subPressure
+    List<vector>* subTraction
 ) const
 {
     const labelUList& fc = pair_.slavePatch().faceCells();
 
     F.setSize(normal_.size());
-    if (subPressure)
+    if (subTraction)
     {
-        subPressure->setSize(coeff_.size());
+        subTraction->setSize(coeff_.size());
     }
 
     forAll(normal_, i)
     {
-        const vector& n = normal_[i];
         F[i] = explicitForce_[i];
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            const scalar ps =
+            const vector ts
+            (
                 coeff_[s]/area_[s]
-               *(((DM[masterFace_[s]] - D[fc[i]]) & n) + offset_[s]);
-            F[i] += area_[s]*ps*n;
-            if (subPressure)
+               *lawPart(i, DM[masterFace_[s]] - D[fc[i]] + offset_[s])
+            );
+            F[i] += area_[s]*ts;
+            if (subTraction)
             {
-                (*subPressure)[s] = ps;
+                (*subTraction)[s] = ts;
             }
         }
     }
@@ -266,7 +329,7 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::slaveDiag() const
     vectorField& d = td.ref();
     forAll(d, i)
     {
-        const vector w(implicitWeights(normal_[i]));
+        const vector w(faceWeights(i));
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
             d[i] += coeff_[s]*w;
@@ -281,7 +344,7 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterDiag() const
     vectorField d(nMaster_, Zero);
     forAll(normal_, i)
     {
-        const vector w(implicitWeights(normal_[i]));
+        const vector w(faceWeights(i));
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
             d[masterFace_[s]] += coeff_[s]*w;
@@ -303,7 +366,7 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
     scalarField& nb = tnb.ref();
     forAll(nb, i)
     {
-        const scalar w = implicitWeights(normal_[i])[cmpt];
+        const scalar w = faceWeights(i)[cmpt];
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
             nb[i] += coeff_[s]*w*psiM[masterFace_[s]];
@@ -324,7 +387,7 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::masterNeighbour
     scalarField nb(nMaster_, 0);
     forAll(normal_, i)
     {
-        const scalar w = implicitWeights(normal_[i])[cmpt];
+        const scalar w = faceWeights(i)[cmpt];
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
             nb[masterFace_[s]] += coeff_[s]*w*psi[fc[i]];

@@ -1,0 +1,113 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "coulombFrictionModel.H"
+#include "addToRunTimeSelectionTable.H"
+#include "coulombReturnMap.H"
+#include "eigenFoamConversions.H"
+
+namespace Foam
+{
+namespace frictionModels
+{
+    defineTypeNameAndDebug(coulomb, 0);
+    addToRunTimeSelectionTable(frictionModel, coulomb, dictionary);
+}
+}
+
+
+namespace
+{
+    Foam::scalar readMu(const Foam::dictionary& coeffs, const Foam::fvPatch& p)
+    {
+        using namespace Foam;
+        if (!coeffs.found("mu"))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Missing entry 'mu' in " << coeffs.name()
+                << " (contact patch " << p.name() << "): the friction model"
+                << " coulomb needs its coefficient, e.g. coulombCoeffs"
+                << " { mu 0.3; }" << exit(FatalIOError);
+        }
+        return coeffs.get<scalar>("mu");
+    }
+}
+
+
+Foam::frictionModels::coulomb::coulomb
+(
+    const fvPatch& patch,
+    const dictionary& coeffs
+)
+:
+    frictionModel(patch, coeffs),
+    mu_(readMu(coeffs, patch))
+{
+    const c4f::contact::FrictionCheck check =
+        c4f::contact::checkFrictionParameters(mu_, 1);
+    if (check != c4f::contact::FrictionCheck::ok)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid mu " << mu_ << " in " << coeffs.name()
+            << " (contact patch " << patch.name() << "): "
+            << c4f::contact::describe(check).c_str() << exit(FatalIOError);
+    }
+    addHistory();
+}
+
+
+void Foam::frictionModels::coulomb::correct
+(
+    const contactSlaveState& state,
+    contactSlaveCondition& cond
+)
+{
+    const vectorField& R = state_.field<vector>("contactStickPoint");
+
+    forAll(cond.tied, facei)
+    {
+        cond.tied[facei] = false;
+        cond.tangentialTraction[facei] = Zero;
+
+        if (!cond.coupled[facei])
+        {
+            setStick(facei, -1, cond);
+            updateSlip(state, cond, facei);
+            continue;
+        }
+
+        // The tangential gap of the face's stick law, zero in stick:
+        // G_T = (I - n n)(u - R) + C t_T (C = 0: the exact tie; C > 0: the
+        // spring t_T = -(1/C)(I - n n)(u - R))
+        const vector& n = state.normal[facei];
+        const vector& t = state.traction[facei];
+        const vector tT(t - n*(n & t));
+        const vector GT(state.relative[facei] - R[facei] + cond.compliance[facei]*tT);
+
+        const c4f::contact::CoulombResult r = c4f::contact::coulombReturnMap
+        (
+            c4fConvert::toEigen(n),
+            c4fConvert::toEigen(tT),
+            c4fConvert::toEigen(GT),
+            state.reaction[facei],
+            mu_,
+            state.pairStiffness[facei]
+        );
+
+        if (r.slip)
+        {
+            cond.tangentialTraction[facei] = c4fConvert::toFoam(r.traction);
+            setStick(facei, 0, cond);
+        }
+        else
+        {
+            cond.tied[facei] = true;
+            setStick(facei, 1, cond);
+        }
+        updateSlip(state, cond, facei);
+    }
+}
+
+
+// ************************************************************************* //

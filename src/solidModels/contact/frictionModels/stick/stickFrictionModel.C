@@ -1,0 +1,55 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "stickFrictionModel.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace frictionModels
+{
+    defineTypeNameAndDebug(stick, 0);
+    addToRunTimeSelectionTable(frictionModel, stick, dictionary);
+}
+}
+
+
+Foam::frictionModels::stick::stick
+(
+    const fvPatch& patch,
+    const dictionary& coeffs
+)
+:
+    frictionModel(patch, coeffs)
+{
+    if (coeffs.size())
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "The friction model stick has no coefficients, but "
+            << coeffs.name() << " has " << coeffs.toc()
+            << " (contact patch " << patch.name() << "): remove them, or"
+            << " choose coulomb with coulombCoeffs { mu ...; }"
+            << exit(FatalIOError);
+    }
+    addHistory();
+}
+
+
+void Foam::frictionModels::stick::correct
+(
+    const contactSlaveState& state,
+    contactSlaveCondition& cond
+)
+{
+    cond.tangentialTraction = Zero;
+    forAll(cond.tied, facei)
+    {
+        cond.tied[facei] = cond.coupled[facei];
+        setStick(facei, cond.coupled[facei] ? 1 : -1, cond);
+        updateSlip(state, cond, facei);
+    }
+}
+
+
+// ************************************************************************* //
