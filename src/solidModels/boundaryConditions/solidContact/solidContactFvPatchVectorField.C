@@ -294,6 +294,10 @@ void Foam::solidContactFvPatchVectorField::initSlave()
             << " 2.7.3); valid friction models with it are frictionless"
             << " and stick" << exit(FatalIOError);
     }
+    if (method_->augmentsMultipliers())
+    {
+        friction_->augmentMultipliers();
+    }
     cond_.setSize(patch().size());
 
     // A restart continues from the written active set, pressure and the
@@ -555,6 +559,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
         in.stickPoint = friction_->state().field<vector>("contactStickPoint");
     }
     in.tangentialTraction = cond_.tangentialTraction;
+    in.tangentialMultiplier = cond_.tangentialMultiplier;
     in.D = &primitiveField();
 
     coupling_->set(in);
@@ -1108,7 +1113,15 @@ bool Foam::solidContactFvPatchVectorField::updateMultipliers()
         multiplierHistory_.append(rec);
     }
 
-    const bool updated = method_->updateMultipliers(lastState_, cond_);
+    // The tangential multipliers of an augmenting method are updated with
+    // the normal ones, from the same converged state
+    lastState_.traction = traction_;
+    const bool updated =
+        method_->updateMultipliers(lastState_, cond_)
+      | friction_->updateMultipliers
+        (
+            lastState_, cond_, method_->multiplierTolerance()
+        );
     if (updated)
     {
         setOutputFields(pair_->gap(), activeFraction(cond_.active));
@@ -1119,7 +1132,9 @@ bool Foam::solidContactFvPatchVectorField::updateMultipliers()
 
 bool Foam::solidContactFvPatchVectorField::multipliersConverged() const
 {
-    return master_ || method_->multipliersConverged();
+    return
+        master_
+     || (method_->multipliersConverged() && friction_->multipliersConverged());
 }
 
 

@@ -133,7 +133,15 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                       + (R - n*(n & R))
                       + rs*in.slaveC[i]
                       - rm*in.masterC[j]
-                      + in.compliance[i]*in.pressure0[i]*n
+                      + in.compliance[i]
+                       *(
+                            in.pressure0[i]*n
+                          + (
+                                in.tangentialMultiplier.size()
+                              ? in.tangentialMultiplier[i]
+                              : vector::zero
+                            )
+                        )
                     );
                 }
                 else

@@ -63,12 +63,11 @@ void Foam::frictionModels::coulomb::correct
     contactSlaveCondition& cond
 )
 {
-    const vectorField& R = state_.field<vector>("contactStickPoint");
-
     forAll(cond.tied, facei)
     {
         cond.tied[facei] = false;
         cond.tangentialTraction[facei] = Zero;
+        cond.tangentialMultiplier[facei] = Zero;
 
         if (!cond.coupled[facei])
         {
@@ -77,13 +76,10 @@ void Foam::frictionModels::coulomb::correct
             continue;
         }
 
-        // The tangential gap of the face's stick law, zero in stick:
-        // G_T = (I - n n)(u - R) + C t_T (C = 0: the exact tie; C > 0: the
-        // spring t_T = -(1/C)(I - n n)(u - R))
         const vector& n = state.normal[facei];
         const vector& t = state.traction[facei];
         const vector tT(t - n*(n & t));
-        const vector GT(state.relative[facei] - R[facei] + cond.compliance[facei]*tT);
+        const vector GT(tangentialGap(state, cond, facei));
 
         const c4f::contact::CoulombResult r = c4f::contact::coulombReturnMap
         (
@@ -102,7 +98,7 @@ void Foam::frictionModels::coulomb::correct
         }
         else
         {
-            cond.tied[facei] = true;
+            tie(facei, cond);
             setStick(facei, 1, cond);
         }
         updateSlip(state, cond, facei);

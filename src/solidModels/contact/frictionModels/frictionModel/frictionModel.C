@@ -37,6 +37,46 @@ void Foam::frictionModel::setStick
 }
 
 
+Foam::vector Foam::frictionModel::tangentialGap
+(
+    const contactSlaveState& state,
+    const contactSlaveCondition& cond,
+    const label facei
+) const
+{
+    const vector& n = state.normal[facei];
+    const vector& t = state.traction[facei];
+    vector G
+    (
+        state.relative[facei]
+      - state_.field<vector>("contactStickPoint")[facei]
+      + cond.compliance[facei]*(t - n*(n & t))
+    );
+    if (augmented())
+    {
+        G -=
+            cond.compliance[facei]
+           *state_.field<vector>("contactTangentialMultiplier")[facei];
+    }
+    return G - n*(n & G);
+}
+
+
+void Foam::frictionModel::tie
+(
+    const label facei,
+    contactSlaveCondition& cond
+) const
+{
+    cond.tied[facei] = true;
+    if (augmented())
+    {
+        cond.tangentialMultiplier[facei] =
+            state_.field<vector>("contactTangentialMultiplier")[facei];
+    }
+}
+
+
 void Foam::frictionModel::updateSlip
 (
     const contactSlaveState& state,
@@ -44,22 +84,12 @@ void Foam::frictionModel::updateSlip
     const label facei
 )
 {
-    const vectorField& R = state_.field<vector>("contactStickPoint");
     vectorField& slip = state_.field<vector>("contactSlip");
 
     slip[facei] = slipAtStepStart_[facei];
     if (state_["contactStick"][facei] == 0)
     {
-        const vector& n = state.normal[facei];
-        const vector tT
-        (
-            cond.tangentialTraction[facei]
-        );
-        const vector dR
-        (
-            state.relative[facei] + cond.compliance[facei]*tT - R[facei]
-        );
-        slip[facei] += dR - n*(n & dR);
+        slip[facei] += tangentialGap(state, cond, facei);
     }
 }
 
@@ -75,7 +105,8 @@ Foam::frictionModel::frictionModel
     patch_(patch),
     coeffs_(coeffs),
     state_(patch.size()),
-    slipAtStepStart_(patch.size(), Zero)
+    slipAtStepStart_(patch.size(), Zero),
+    multipliersConverged_(true)
 {}
 
 
@@ -92,31 +123,75 @@ void Foam::frictionModel::beginStep
         return;
     }
 
-    vectorField& R = state_.field<vector>("contactStickPoint");
-    const vectorField& slip = state_.field<vector>("contactSlip");
     const scalarField& stick = state_["contactStick"];
 
-    slipAtStepStart_ = slip;
-    forAll(R, facei)
+    multipliersConverged_ = true;
+    slipAtStepStart_ = state_.field<vector>("contactSlip");
+    forAll(stick, facei)
     {
+        vector& R = state_.field<vector>("contactStickPoint")[facei];
         if (stick[facei] < 0)
         {
-            R[facei] = state.relative[facei];
+            R = state.relative[facei];
         }
         else if (stick[facei] == 0)
         {
-            const vector& n = state.normal[facei];
-            const vector& t = state.traction[facei];
-            const vector tT(t - n*(n & t));
-            const vector Rnew
-            (
-                state.relative[facei] + cond.compliance[facei]*tT
-            );
-            const vector dR(Rnew - R[facei]);
-            slipAtStepStart_[facei] = slip[facei] + dR - n*(n & dR);
-            R[facei] = Rnew;
+            const vector G(tangentialGap(state, cond, facei));
+            slipAtStepStart_[facei] += G;
+            R += G;
         }
     }
+}
+
+
+void Foam::frictionModel::augmentMultipliers()
+{
+    if (hasTangentialLaw())
+    {
+        state_.add("contactTangentialMultiplier", vector::zero, dimPressure);
+    }
+}
+
+
+bool Foam::frictionModel::updateMultipliers
+(
+    const contactSlaveState& state,
+    const contactSlaveCondition& cond,
+    const scalar tolerance
+)
+{
+    if (!augmented())
+    {
+        return false;
+    }
+
+    vectorField& lambda = state_.field<vector>("contactTangentialMultiplier");
+    scalar dLambda = 0;
+    scalar lambdaMax = 0;
+    forAll(lambda, facei)
+    {
+        vector lambdaNew(Zero);
+        if (cond.coupled[facei])
+        {
+            const vector& n = state.normal[facei];
+            const vector& t = state.traction[facei];
+            lambdaNew = t - n*(n & t);
+        }
+        dLambda = max(dLambda, mag(lambdaNew - lambda[facei]));
+        lambdaMax = max(lambdaMax, mag(lambdaNew));
+        lambda[facei] = lambdaNew;
+    }
+    reduce(dLambda, maxOp<scalar>());
+    reduce(lambdaMax, maxOp<scalar>());
+
+    multipliersConverged_ = dLambda <= tolerance*lambdaMax;
+
+    Info<< "    contact " << patch_.name() << ": tangential multiplier"
+        << " update  max|dlambda_T|/max|lambda_T| = "
+        << (lambdaMax > 0 ? dLambda/lambdaMax : 0)
+        << (multipliersConverged_ ? "  converged" : "") << endl;
+
+    return !multipliersConverged_;
 }
 
 

@@ -43,9 +43,14 @@ void Foam::frictionModels::stick::correct
 )
 {
     cond.tangentialTraction = Zero;
+    cond.tangentialMultiplier = Zero;
     forAll(cond.tied, facei)
     {
-        cond.tied[facei] = cond.coupled[facei];
+        cond.tied[facei] = false;
+        if (cond.coupled[facei])
+        {
+            tie(facei, cond);
+        }
         setStick(facei, cond.coupled[facei] ? 1 : -1, cond);
         updateSlip(state, cond, facei);
     }
