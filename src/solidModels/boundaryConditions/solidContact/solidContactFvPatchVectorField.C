@@ -142,6 +142,17 @@ void Foam::solidContactFvPatchVectorField::checkPatch
             << " (interpolated point normals)" << exit(FatalIOError);
     }
 
+    if (!contactConstraintGroups::sideNames.found(constraintFaces_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid constraintFaces " << constraintFaces_ << " in "
+            << dict.name() << ": valid are "
+            << contactConstraintGroups::sideNames.sortedToc()
+            << " (slave: one constraint per slave face; master: one per"
+            << " master face; auto: per master face where the slave is"
+            << " much stiffer)" << exit(FatalIOError);
+    }
+
     if (!(rebuildTolerance_ >= 0))
     {
         FatalIOErrorInFunction(dict)
@@ -445,7 +456,14 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
                 normals_ == "smoothed", rebuildTolerance_
             )
         );
-        coupling_.reset(new contactInterfaceCoupling(pair_()));
+        coupling_.reset
+        (
+            new contactInterfaceCoupling
+            (
+                pair_(),
+                contactConstraintGroups::sideNames[constraintFaces_]
+            )
+        );
     }
 
     // 1. Both surfaces in the current configuration, and the projection
@@ -547,6 +565,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
             << "  F_N = " << normalForce_
             << "  max|g| = " << gMax(mag(state.gap))
             << "  minGap = " << minGapInRange(state.gap, state.inRange)
+            << "  masterFaceConstraints = " << coupling_->nConstraintGroups()
             << endl;
     }
 }
@@ -569,6 +588,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     searchDistance_(-1),
     normals_("faces"),
     rebuildTolerance_(0),
+    constraintFaces_("auto"),
     method_(),
     pair_(),
     coupling_(),
@@ -602,6 +622,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     searchDistance_(dict.getOrDefault<scalar>("searchDistance", -1)),
     normals_(dict.getOrDefault<word>("normals", "faces")),
     rebuildTolerance_(dict.getOrDefault<scalar>("rebuildTolerance", 0)),
+    constraintFaces_(dict.getOrDefault<word>("constraintFaces", "auto")),
     method_(),
     pair_(),
     coupling_(),
@@ -693,6 +714,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     searchDistance_(ptf.searchDistance_),
     normals_(ptf.normals_),
     rebuildTolerance_(ptf.rebuildTolerance_),
+    constraintFaces_(ptf.constraintFaces_),
     method_(),
     pair_(),
     coupling_(),
@@ -753,6 +775,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     searchDistance_(ptf.searchDistance_),
     normals_(ptf.normals_),
     rebuildTolerance_(ptf.rebuildTolerance_),
+    constraintFaces_(ptf.constraintFaces_),
     method_(),
     pair_(),
     coupling_(),
@@ -1194,6 +1217,7 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
         method_->write(os);
         os.writeEntry("normals", normals_);
         os.writeEntry("rebuildTolerance", rebuildTolerance_);
+        os.writeEntry("constraintFaces", constraintFaces_);
         if (dict_.found("searchDistance"))
         {
             os.writeEntry("searchDistance", searchDistance_);
