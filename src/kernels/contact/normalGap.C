@@ -4,6 +4,8 @@
 
 #include "normalGap.H"
 
+#include <cmath>
+
 namespace c4f
 {
 namespace contact
@@ -49,6 +51,24 @@ double normalGap
 )
 {
     return (x2 - x1bar).dot(n1bar);
+}
+
+
+double planeGap
+(
+    const Eigen::Vector3d& c,
+    const Eigen::Vector3d& xm,
+    const Eigen::Vector3d& nm,
+    const Eigen::Vector3d& xs,
+    const Eigen::Vector3d& ns
+)
+{
+    const double nn = ns.dot(nm);
+    if (!(std::abs(nn) >= 1e-6*ns.norm()))
+    {
+        return nm.dot(xs - xm);
+    }
+    return nm.dot(c - xm) + ns.dot(xs - c)/nn;
 }
 
 

@@ -86,6 +86,36 @@ double polygonArea(const Polygon& p)
 }
 
 
+Eigen::Vector3d polygonCentroid(const Polygon& p)
+{
+    if (p.empty())
+    {
+        return Eigen::Vector3d::Zero();
+    }
+    const Eigen::Vector3d c = vertexAverage(p);
+    const Eigen::Vector3d A = areaVector(p);
+    const double mag = A.norm();
+    if (!(mag > 0))
+    {
+        return c;
+    }
+    const Eigen::Vector3d n = A/mag;
+
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double area = 0;
+    const std::size_t nv = p.size();
+    for (std::size_t i = 0; i < nv; ++i)
+    {
+        const Eigen::Vector3d& a = p[i];
+        const Eigen::Vector3d& b = p[(i + 1) % nv];
+        const double ai = 0.5*(a - c).cross(b - c).dot(n);
+        sum += ai*(c + a + b)/3.0;
+        area += ai;
+    }
+    return sum/area;
+}
+
+
 Polygon projectOntoPlane(const Polygon& p, const Plane& plane)
 {
     Polygon q;

@@ -142,6 +142,17 @@ void Foam::solidContactFvPatchVectorField::checkPatch
             << " (interpolated point normals)" << exit(FatalIOError);
     }
 
+    if (!contactConstraintGroups::sideNames.found(constraintFaces_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid constraintFaces " << constraintFaces_ << " in "
+            << dict.name() << ": valid are "
+            << contactConstraintGroups::sideNames.sortedToc()
+            << " (slave: one constraint per slave face; master: one per"
+            << " master face; auto: per master face where the slave is"
+            << " much stiffer)" << exit(FatalIOError);
+    }
+
     if (!(rebuildTolerance_ >= 0))
     {
         FatalIOErrorInFunction(dict)
@@ -470,7 +481,14 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
                 normals_ == "smoothed", rebuildTolerance_
             )
         );
-        coupling_.reset(new contactInterfaceCoupling(pair_()));
+        coupling_.reset
+        (
+            new contactInterfaceCoupling
+            (
+                pair_(),
+                contactConstraintGroups::sideNames[constraintFaces_]
+            )
+        );
     }
 
     // 1. Both surfaces in the current configuration, and the projection
@@ -588,6 +606,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
             << "  F_N = " << normalForce_
             << "  max|g| = " << gMax(mag(state.gap))
             << "  minGap = " << minGapInRange(state.gap, state.inRange)
+            << "  masterFaceConstraints = " << coupling_->nConstraintGroups()
             << endl;
     }
 }
@@ -610,6 +629,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     searchDistance_(-1),
     normals_("faces"),
     rebuildTolerance_(0),
+    constraintFaces_("auto"),
     method_(),
     friction_(),
     pair_(),
@@ -644,6 +664,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     searchDistance_(dict.getOrDefault<scalar>("searchDistance", -1)),
     normals_(dict.getOrDefault<word>("normals", "faces")),
     rebuildTolerance_(dict.getOrDefault<scalar>("rebuildTolerance", 0)),
+    constraintFaces_(dict.getOrDefault<word>("constraintFaces", "auto")),
     method_(),
     friction_(),
     pair_(),
@@ -740,6 +761,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     searchDistance_(ptf.searchDistance_),
     normals_(ptf.normals_),
     rebuildTolerance_(ptf.rebuildTolerance_),
+    constraintFaces_(ptf.constraintFaces_),
     method_(),
     friction_(),
     pair_(),
@@ -803,6 +825,7 @@ Foam::solidContactFvPatchVectorField::solidContactFvPatchVectorField
     searchDistance_(ptf.searchDistance_),
     normals_(ptf.normals_),
     rebuildTolerance_(ptf.rebuildTolerance_),
+    constraintFaces_(ptf.constraintFaces_),
     method_(),
     friction_(),
     pair_(),
@@ -1275,6 +1298,7 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
         os.writeEntry("friction", friction_->frictionName());
         friction_->write(os);
         os.writeEntry("rebuildTolerance", rebuildTolerance_);
+        os.writeEntry("constraintFaces", constraintFaces_);
         if (dict_.found("searchDistance"))
         {
             os.writeEntry("searchDistance", searchDistance_);

@@ -4,6 +4,7 @@
 
 #include "contactPatchPair.H"
 #include "polygonOverlap.H"
+#include "normalGap.H"
 #include "eigenFoamConversions.H"
 #include "Pstream.H"
 #include "ListOps.H"
@@ -91,6 +92,11 @@ void Foam::contactPatchPair::gatherMasterSurface()
     for (face& f : masterRefFaces_)
     {
         inplaceRenumber(pointMap, f);
+    }
+    masterRefCentres_.setSize(masterRefFaces_.size());
+    forAll(masterRefFaces_, facei)
+    {
+        masterRefCentres_[facei] = masterRefFaces_[facei].centre(masterRefPoints_);
     }
 
     // Inverse-distance weights of the faces around each point
@@ -402,25 +408,46 @@ void Foam::contactPatchPair::update
         }
     }
 
-    computeOverlaps();
+    computeOverlaps(x);
 }
 
 
-void Foam::contactPatchPair::computeOverlaps()
+void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
 {
     overlapFaces_.setSize(slave_.size());
     overlapWeights_.setSize(slave_.size());
+    overlapGaps_.setSize(slave_.size());
 
     forAll(overlapFaces_, facei)
     {
         overlapFaces_[facei].clear();
         overlapWeights_[facei].clear();
+        overlapGaps_[facei].clear();
         if (!inRange_[facei])
         {
             continue;
         }
 
         const std::vector<Eigen::Vector3d> poly(slavePolygon(facei));
+
+        // Each face's plane through its centre moved by its face value,
+        // oriented as its current polygon
+        const Eigen::Vector3d xs(c4fConvert::toEigen(x[facei]));
+        const Eigen::Vector3d ns(c4f::transfer::polygonPlane(poly).normal);
+        const auto faceGap = [&](const label j, const Eigen::Vector3d& c)
+        {
+            return c4f::contact::planeGap
+            (
+                c,
+                c4fConvert::toEigen
+                (
+                    vector(masterRefCentres_[j] + masterFaceD_[j])
+                ),
+                masterNormals_[j],
+                xs,
+                ns
+            );
+        };
 
         // Candidates: master faces near the slave polygon, the box grown by
         // the gap so that an open or penetrated face still finds them, and
@@ -441,19 +468,23 @@ void Foam::contactPatchPair::computeOverlaps()
         const std::vector<int> cand(search_.facesInBox(lo, hi));
 
         std::vector<double> overlaps;
+        std::vector<Eigen::Vector3d> centroids;
         overlaps.reserve(cand.size());
+        centroids.reserve(cand.size());
         for (const int j : cand)
         {
             // Only faces that face the slave: the far side of a thin
             // master body must not share the force
             const double facing =
                 masterNormals_[j].dot(masterNormals_[hitFace_[facei]]);
-            overlaps.push_back
+            const c4f::transfer::Polygon overlap
             (
                 facing > 0
-              ? c4f::transfer::overlapArea(poly, masterPolygon(j))
-              : 0
+              ? c4f::transfer::overlapPolygon(poly, masterPolygon(j))
+              : c4f::transfer::Polygon()
             );
+            overlaps.push_back(c4f::transfer::polygonArea(overlap));
+            centroids.push_back(c4f::transfer::polygonCentroid(overlap));
         }
 
         const std::vector<double> w
@@ -463,11 +494,13 @@ void Foam::contactPatchPair::computeOverlaps()
 
         DynamicList<label> faces;
         DynamicList<scalar> weights;
+        DynamicList<scalar> gaps;
         if (w.empty())
         {
             // No overlap: the projection's own face takes it all
             faces.append(hitFace_[facei]);
             weights.append(1);
+            gaps.append(faceGap(hitFace_[facei], xs));
         }
         else
         {
@@ -477,11 +510,13 @@ void Foam::contactPatchPair::computeOverlaps()
                 {
                     faces.append(cand[k]);
                     weights.append(w[k]);
+                    gaps.append(faceGap(cand[k], centroids[k]));
                 }
             }
         }
         overlapFaces_[facei].transfer(faces);
         overlapWeights_[facei].transfer(weights);
+        overlapGaps_[facei].transfer(gaps);
     }
 }
 

@@ -54,11 +54,13 @@ Foam::vector Foam::contactInterfaceCoupling::lawPart
 
 Foam::contactInterfaceCoupling::contactInterfaceCoupling
 (
-    const contactPatchPair& pair
+    const contactPatchPair& pair,
+    const contactConstraintGroups::side constraintFaces
 )
 :
     pair_(pair),
     start_(1, 0),
+    groups_(pair, constraintFaces, tag_),
     nMaster_(0)
 {}
 
@@ -86,6 +88,7 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     DynamicList<scalar> coeff;
     DynamicList<vector> offset;
     DynamicList<scalar> area;
+    scalarField gRefs(slave.size(), 0);
     start.append(0);
 
     forAll(faces, i)
@@ -109,6 +112,7 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                 Dm += weights[i][k]*in.masterDf[faces[i][k]];
             }
             const scalar gRef = in.gap[i] - (n & (in.slaveDf[i] - Dm));
+            gRefs[i] = gRef;
 
             const scalar rs = in.slaveDelta[i]/in.slaveK[i];
             forAll(faces[i], k)
@@ -124,8 +128,8 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                 {
                     // The vector gap G = gRef n - (I - n n) R_i + (D_fi -
                     // sum_j w_ij D_fj) is zero in stick: held to the stick
-                    // point R_i of the step's start tangentially, closed
-                    // normally; the explicit tractions enter whole
+                    // point R_i tangentially, closed normally; the explicit
+                    // tractions enter whole
                     const vector& R = in.stickPoint[i];
                     offset.append
                     (
@@ -168,9 +172,73 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     offset_.transfer(offset);
     area_.transfer(area);
 
+    setGroups(in, gRefs);
+
     if (in.D)
     {
         correctDeferred(*in.D, in.masterDelta/in.masterK, in.masterMagSf);
+    }
+}
+
+
+void Foam::contactInterfaceCoupling::setGroups
+(
+    const inputs& in,
+    const scalarField& gRef
+)
+{
+    slaveR_ = in.slaveDelta/in.slaveK;
+    const scalarField masterR(in.masterDelta/in.masterK);
+
+    scalarList kappa(coeff_.size());
+    scalarList slaveR(coeff_.size());
+    forAll(slaveR_, i)
+    {
+        for (label s = start_[i]; s < start_[i+1]; ++s)
+        {
+            kappa[s] = coeff_[s]/area_[s];
+            slaveR[s] = slaveR_[i];
+        }
+    }
+
+    groups_.set(masterFace_, area_, kappa, slaveR, masterR);
+
+    if (!groups_.any())
+    {
+        return;
+    }
+
+    // A grouped sub-face's gap is its overlap's own (contactPatchPair::
+    // overlapGaps: the slave face's plane against its master face's, each
+    // through its centre moved by its face value), linearised about the
+    // current face values: so that each master face value enters its own
+    // constraint. The search's gap (the master surface through points
+    // interpolated from the face values) cannot see an odd-even mode of
+    // the master face values (each point averages two faces); with it the
+    // grouped pressures oscillated as much as the slave's had
+    const List<scalarList>& overlapGaps = pair_.overlapGaps();
+    forAll(slaveR_, i)
+    {
+        const vector& n = normal_[i];
+        for (label s = start_[i]; s < start_[i+1]; ++s)
+        {
+            if (groups_.grouped(s))
+            {
+                // Its share of the group's stiffness in the matrix (see
+                // contactConstraintGroups), and its own gap
+                const label j = masterFace_[s];
+                coeff_[s] = area_[s]*groups_.stiffness(s);
+                offset_[s] +=
+                    n
+                   *(
+                        gRef[i]
+                      - (
+                            overlapGaps[i][s - start_[i]]
+                          - (n & (in.slaveDf[i] - in.masterDf[j]))
+                        )
+                    );
+            }
+        }
     }
 }
 
@@ -192,6 +260,7 @@ void Foam::contactInterfaceCoupling::correctDeferred
     // affine map (Walker & Ni 2011) and needs about as many sweeps as the
     // map has distinct clusters of eigenvalues.
     const vectorField DM(masterCellValues(D));
+    const scalarField& magSf = pair_.slavePatch().magSf();
     const List<vector> base(offset_);
     const label nSub = offset_.size();
     std::vector<double> x(3*nSub, 0.0), g(3*nSub), xNext;
@@ -220,10 +289,10 @@ void Foam::contactInterfaceCoupling::correctDeferred
         {
             offset_[s] = base[s] + vector(x[3*s], x[3*s + 1], x[3*s + 2]);
         }
-        slaveForces(D, DM, F, &p);
+        slaveForces(D, DM, F, p);
         const vectorField TM
         (
-            pair_.sumOverProcessors(masterTransfer(F)(), tag_)/masterMagSf
+            pair_.sumOverProcessors(masterTransfer(F, p)(), tag_)/masterMagSf
         );
 
         scalar change = 0;
@@ -232,14 +301,15 @@ void Foam::contactInterfaceCoupling::correctDeferred
             for (label s = start_[i]; s < start_[i+1]; ++s)
             {
                 // Delta_ij = r_j (t_j + t_ij), the part the law acts on
-                const vector d
-                (
-                    lawPart
-                    (
-                        i,
-                        masterR[masterFace_[s]]*(TM[masterFace_[s]] + p[s])
-                    )
-                );
+                vector d(masterR[masterFace_[s]]*(TM[masterFace_[s]] + p[s]));
+                if (groups_.grouped(s))
+                {
+                    // A grouped sub-face's traction is not its slave face's
+                    // either: the averaged gap takes the slave face value
+                    // the face's traction gives, as the master's
+                    d -= slaveR_[i]*(F[i]/magSf[i] - p[s]);
+                }
+                d = lawPart(i, d);
                 for (direction c = 0; c < 3; ++c)
                 {
                     g[3*s + c] = d[c];
@@ -277,32 +347,33 @@ void Foam::contactInterfaceCoupling::slaveForces
     const vectorField& D,
     const vectorField& DM,
     vectorField& F,
-    List<vector>* subTraction
+    List<vector>& p
 ) const
 {
     const labelUList& fc = pair_.slavePatch().faceCells();
 
-    F.setSize(normal_.size());
-    if (subTraction)
+    // Each sub-face's own law t_s = kappa_s e_s (along n, or whole for a
+    // tied face), then the groups' shared traction from the e_s of their
+    // sub-faces
+    List<vector> e(coeff_.size());
+    p.setSize(coeff_.size());
+    forAll(normal_, i)
     {
-        subTraction->setSize(coeff_.size());
+        for (label s = start_[i]; s < start_[i+1]; ++s)
+        {
+            e[s] = lawPart(i, DM[masterFace_[s]] - D[fc[i]] + offset_[s]);
+            p[s] = coeff_[s]/area_[s]*e[s];
+        }
     }
+    groups_.average(e, p);
 
+    F.setSize(normal_.size());
     forAll(normal_, i)
     {
         F[i] = explicitForce_[i];
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            const vector ts
-            (
-                coeff_[s]/area_[s]
-               *lawPart(i, DM[masterFace_[s]] - D[fc[i]] + offset_[s])
-            );
-            F[i] += area_[s]*ts;
-            if (subTraction)
-            {
-                (*subTraction)[s] = ts;
-            }
+            F[i] += area_[s]*p[s];
         }
     }
 }
@@ -310,11 +381,13 @@ void Foam::contactInterfaceCoupling::slaveForces
 
 Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterTransfer
 (
-    const vectorField& slaveForce
+    const vectorField& slaveForce,
+    const List<vector>& p
 ) const
 {
     // The master receives each slave face's force by the overlap weights,
-    // as one pressure per slave face
+    // as one pressure per slave face; a grouped sub-face's force goes to
+    // its own master face (the transpose of the gap averaged over it)
     const labelListList& faces = pair_.overlapFaces();
     const List<scalarList>& weights = pair_.overlapWeights();
 
@@ -322,9 +395,22 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterTransfer
     vectorField& FM = tFM.ref();
     forAll(faces, i)
     {
+        vector Fi(slaveForce[i]);
+        if (groups_.any())
+        {
+            for (label s = start_[i]; s < start_[i+1]; ++s)
+            {
+                if (groups_.grouped(s))
+                {
+                    const vector Fs(area_[s]*p[s]);
+                    FM[masterFace_[s]] -= Fs;
+                    Fi -= Fs;
+                }
+            }
+        }
         forAll(faces[i], k)
         {
-            FM[faces[i][k]] -= weights[i][k]*slaveForce[i];
+            FM[faces[i][k]] -= weights[i][k]*Fi;
         }
     }
     return tFM;
@@ -413,13 +499,14 @@ void Foam::contactInterfaceCoupling::forces
     scalarField& slavePressure
 ) const
 {
-    slaveForces(D, masterCellValues(D), slaveForce);
+    List<vector> p;
+    slaveForces(D, masterCellValues(D), slaveForce, p);
 
     slavePressure = (slaveForce & normal_)/pair_.slavePatch().magSf();
 
     masterForce =
         pair_.masterSlice
         (
-            pair_.sumOverProcessors(masterTransfer(slaveForce)(), tag_)()
+            pair_.sumOverProcessors(masterTransfer(slaveForce, p)(), tag_)()
         );
 }

@@ -89,3 +89,41 @@ TEST(normalGap, degenerateSweepHasRightSignAndNoNaN)
         }
     }
 }
+
+TEST(planeGap, parallelPlanesTiltedSlaveAndLinearity)
+{
+    const V nm(0, 0, 1), xm(0.3, -0.1, 1.0);
+
+    // Parallel planes: the distance, wherever c lies and whichever way
+    // the slave normal points
+    const V xs(2.0, 5.0, 1.25);
+    for (const V& c : {V(0, 0, 0), V(0.7, 0.2, 1.0), V(-3, 4, 9)})
+    {
+        EXPECT_NEAR(planeGap(c, xm, nm, xs, V(0, 0, -1)), 0.25, 1e-15);
+        EXPECT_NEAR(planeGap(c, xm, nm, xs, V(0, 0, 3)), 0.25, 1e-15);
+    }
+
+    // A slave plane tilted by slope s along x: its height over c is
+    // z(xs) + s (c.x - xs.x)
+    const double s = 0.03;
+    const V ns(-s, 0, 1);
+    const V c(0.5, 0.0, 1.0);
+    const V xs2(0.2, 0.0, 1.001);
+    EXPECT_NEAR(planeGap(c, xm, nm, xs2, ns), 0.001 + s*(0.5 - 0.2), 1e-15);
+    // The slave plane's point over c lies on it and above c along nm
+    const double g = planeGap(c, xm, nm, xs2, ns);
+    const V y = c + (g - nm.dot(c - xm))*nm;
+    EXPECT_NEAR(ns.dot(y - xs2), 0, 1e-15);
+
+    // Linear in xs and xm with dg/dxs = ns/(ns.nm), dg/dxm = -nm
+    const V nsTilted(0.1, -0.2, -1.0), nmTilted = V(0.05, 0.02, 1.0).normalized();
+    const V d1(1e-3, -2e-3, 3e-3), d2(-4e-3, 1e-3, 2e-3);
+    const double g0 = planeGap(c, xm, nmTilted, xs2, nsTilted);
+    EXPECT_NEAR(planeGap(c, xm, nmTilted, xs2 + d1, nsTilted) - g0,
+                nsTilted.dot(d1)/nsTilted.dot(nmTilted), 1e-15);
+    EXPECT_NEAR(planeGap(c, xm + d2, nmTilted, xs2, nsTilted) - g0,
+                -nmTilted.dot(d2), 1e-15);
+
+    // Edge-on slave: the centres' distance, finite
+    EXPECT_NEAR(planeGap(c, xm, nm, xs, V(1, 0, 0)), 0.25, 1e-15);
+}

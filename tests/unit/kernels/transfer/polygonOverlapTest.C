@@ -733,3 +733,44 @@ TEST(PolygonOverlap, randomConvexPairsAreSymmetricBoundedAndAdditive)
     // The sweep actually exercised partial overlaps
     EXPECT_GT(nOverlapping, 300);
 }
+
+TEST(polygonCentroid, rectangleTriangleAndLShape)
+{
+    // A rectangle anywhere in space: its centre
+    const V o(3.1, -2.0, 7.5), e1(0.4, 0.1, 0), e2(-0.02, 0.08, 0.3);
+    const Polygon box{o, o + e1, o + e1 + e2, o + e2};
+    EXPECT_NEAR((polygonCentroid(box) - (o + 0.5*(e1 + e2))).norm(), 0, 1e-14);
+
+    // A triangle: the mean of its vertices, either orientation
+    const Polygon tri{V(0, 0, 0), V(3, 0, 0), V(0, 6, 0)};
+    EXPECT_NEAR((polygonCentroid(tri) - V(1, 2, 0)).norm(), 0, 1e-14);
+    const Polygon triRev{tri[2], tri[1], tri[0]};
+    EXPECT_NEAR((polygonCentroid(triRev) - V(1, 2, 0)).norm(), 0, 1e-14);
+
+    // A concave L of three unit squares, (1/3)(c1 + c2 + c3): not the
+    // vertex average
+    const Polygon L{V(0, 0, 0), V(2, 0, 0), V(2, 1, 0), V(1, 1, 0), V(1, 2, 0), V(0, 2, 0)};
+    const V expected = (V(0.5, 0.5, 0) + V(1.5, 0.5, 0) + V(0.5, 1.5, 0))/3.0;
+    EXPECT_NEAR((polygonCentroid(L) - expected).norm(), 0, 1e-14);
+
+    // Degenerate (a segment) and empty: no NaN
+    const Polygon seg{V(0, 0, 0), V(1, 0, 0), V(2, 0, 0)};
+    EXPECT_TRUE(polygonCentroid(seg).allFinite());
+    EXPECT_NEAR((polygonCentroid(seg) - V(1, 0, 0)).norm(), 0, 1e-15);
+    EXPECT_TRUE(polygonCentroid(Polygon()).allFinite());
+}
+
+TEST(polygonCentroid, firstMomentOfAnOverlapSplitsAdditively)
+{
+    // The centroid of a slave face's projection is the area-weighted mean
+    // of the centroids of its overlaps with master faces that tile it
+    const Polygon slave{V(0.1, 0.0, 0.02), V(0.9, 0.0, 0.03), V(0.9, 1.0, 0.01), V(0.1, 1.0, 0.0)};
+    const Polygon m1{V(0, 0, 0), V(0.45, 0, 0), V(0.45, 1, 0), V(0, 1, 0)};
+    const Polygon m2{V(0.45, 0, 0), V(1, 0, 0), V(1, 1, 0), V(0.45, 1, 0)};
+    const Polygon o1 = overlapPolygon(slave, m1), o2 = overlapPolygon(slave, m2);
+    const double a1 = polygonArea(o1), a2 = polygonArea(o2);
+    const V mean = (a1*polygonCentroid(o1) + a2*polygonCentroid(o2))/(a1 + a2);
+    EXPECT_NEAR(mean.x(), 0.5, 1e-14);
+    EXPECT_NEAR(mean.y(), 0.5, 1e-14);
+    EXPECT_NEAR(polygonCentroid(o1).x(), 0.275, 1e-14);
+}

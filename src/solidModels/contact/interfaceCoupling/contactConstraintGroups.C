@@ -1,0 +1,108 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "contactConstraintGroups.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::contactConstraintGroups::side>
+Foam::contactConstraintGroups::sideNames
+({
+    { side::slave, "slave" },
+    { side::master, "master" },
+    { side::automatic, "auto" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactConstraintGroups::contactConstraintGroups
+(
+    const contactPatchPair& pair,
+    const side s,
+    const int tag
+)
+:
+    pair_(pair),
+    side_(s),
+    tag_(tag),
+    any_(false)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::contactConstraintGroups::set
+(
+    const labelUList& masterFace,
+    const scalarUList& area,
+    const scalarUList& kappa,
+    const scalarUList& slaveR,
+    const scalarField& masterR
+)
+{
+    masterFace_ = masterFace;
+    area_ = area;
+    grouped_.setSize(masterFace.size());
+    grouped_ = false;
+    any_ = false;
+
+    const label nMaster = masterR.size();
+    kbar_.setSize(nMaster);
+    kbar_ = 0;
+    kbarByArea_.setSize(nMaster);
+    kbarByArea_ = 0;
+
+    if (side_ == side::slave)
+    {
+        return;
+    }
+
+    // Per master face, over processors: A_j, sum_s A_s/kappa_s and
+    // sum_s A_s delta_i/K_i
+    Field<vector> sums(nMaster, Zero);
+    forAll(masterFace, s)
+    {
+        sums[masterFace[s]] +=
+            area[s]*vector(1, 1/kappa[s], slaveR[s]);
+    }
+    sums = pair_.sumOverProcessors(sums, tag_);
+
+    boolList groupedFace(nMaster, false);
+    forAll(sums, j)
+    {
+        const scalar A = sums[j].x();
+        if (A > 0)
+        {
+            groupedFace[j] =
+                side_ == side::master
+             || sums[j].z()/A < stiffRatio_*masterR[j];
+            if (groupedFace[j])
+            {
+                kbar_[j] = A/sums[j].y();
+                kbarByArea_[j] = kbar_[j]/A;
+                any_ = true;
+            }
+        }
+    }
+
+    forAll(masterFace, s)
+    {
+        grouped_[s] = groupedFace[masterFace[s]];
+    }
+}
+
+
+Foam::label Foam::contactConstraintGroups::nGroups() const
+{
+    label n = 0;
+    for (const scalar k : kbar_)
+    {
+        n += (k > 0);
+    }
+    return n;
+}
+
+
+// ************************************************************************* //
