@@ -224,11 +224,13 @@ def plot(res, png):
     ax.plot(x[sel] * 1e3, mu * p[sel] / scale, "s", ms=3, mfc="none", color="C7",
             label=r"$\mu p$ (faces)")
     if res["stick"] is not None:
-        st = np.array(res["stick"]) > 0.5
-        ax.plot(x[sel & st] * 1e3, q[sel & st] / scale, "o", ms=4, color="C0",
-                label="q, stick faces")
-        ax.plot(x[sel & ~st] * 1e3, q[sel & ~st] / scale, "o", ms=4, mfc="none", color="C3",
-                label="q, slip or open faces")
+        st = np.rint(res["stick"])
+        for value, style, what in ((1, dict(color="C0"), "stick"),
+                                   (0, dict(mfc="none", color="C3"), "slip"),
+                                   (-1, dict(ms=2, color="C7"), "open")):
+            f = sel & (st == value)
+            ax.plot(x[f] * 1e3, q[f] / scale, "o", **dict(dict(ms=4), **style),
+                    label="q, %s faces" % what)
     else:
         ax.plot(x[sel] * 1e3, q[sel] / scale, "o", ms=4, color="C0", label="q (faces)")
     for v in (-res["c"], res["c"]):
