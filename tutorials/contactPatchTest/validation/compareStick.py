@@ -56,7 +56,7 @@ from c4fpost import contactreport, foamio, hertz, patchtest, report  # noqa: E40
 
 import numpy as np  # noqa: E402
 
-NAME = "contactPatchTestStick"
+NAME = "contactPatchTest"     # the checks are contactPatchTest/stick_...
 UX = 0.005      # tangential displacement of upperTop [m], 0/D
 UY = 0.01       # downward displacement of upperTop [m], 0/D
 L = 1.0         # height of the two-block column [m], system/blockMeshDict
@@ -101,7 +101,7 @@ def time_checks(case, time, method, kind, syy, tau, nu, V, tag):
     mean = {c: float(S[:, i, j].mean()) for c, i, j in COMPONENTS}
     info = dict(time=time, err=err, spread=spread, mean=mean, exact={c: float(ex[i, j])
                                                                     for c, i, j in COMPONENTS})
-    name = "%s/%s" % (NAME, tag)
+    name = "%s/stick_%s" % (NAME, tag)
     if kind == "exact":
         e = max(err.values())
         checks = [dict(name=name + "stress_max_rel_error", value=e, reference=0.0, error=e,
@@ -144,7 +144,7 @@ def compare(case):
         row = contactreport.row_at(case, slave, float(last))
         for col, ref in (("normalForce", abs(syy) * area), ("tangentialForce", abs(tau) * area)):
             v = row.get(col) if row else None
-            checks.append(dict(name="%s/contactReport_%s" % (NAME, col),
+            checks.append(dict(name="%s/stick_contactReport_%s" % (NAME, col),
                                value=float(v) if v is not None else 0.0, reference=ref,
                                error=abs(v - ref) / ref if v is not None else float("inf"),
                                tolerance=TOL, units="N (error: fraction of the exact)"))
