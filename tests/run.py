@@ -969,11 +969,227 @@ def main():
         print("== bad input: each must stop with a clear FatalIOError", flush=True)
         badInput.run_all(res, ROOT, WORK, run)
 
+    if want("friction"):
+        friction_group(res)
+
     print("\n(%.0f s)" % (time.time() - t0))
     if res.failures:
         print("failed: " + ", ".join(res.failures))
     print("%d passed, %d failed" % (res.passed, res.failed))
     return 1 if res.failed else 0
+
+
+# ==========================================================================
+# Group `friction` (issue 10): the frictional tutorials against their closed
+# forms. It runs only when the solver has friction models: where
+# `solidContactFoam -listFrictionModels` fails (a build without them) the
+# whole group prints SKIP with the reason and adds no check, neither passed
+# nor failed.
+#   cattaneoMindlin: compareCattaneo.py (the stick-zone half-width c within
+#     1.5 slave faces, from contactStick and from q; the RMS of q(x) within
+#     5 % of mu p0; Q'/(mu P') within 0.2 of 0.5; contactReport's forces to
+#     1 %) for FRICTION_CATTANEO_METHODS with coulomb; on 2 processors (the
+#     cut through the stick zone) equal to serial to 1e-6; restarted at the
+#     same load it continues in at most 3 correctors with the same forces
+#     and friction state.
+#   slidingBlock: compareSliding.py (F_T/(mu F_N) = 1 to 1e-6 in full slip,
+#     every contact face slipping) for every method of -listMethods that
+#     allows slip; FRICTION_NO_SLIP's methods must refuse coulomb with a
+#     FatalIOError naming it.
+#   contactPatchTest -shear: compareStick.py (the uniform stress to 1e-6)
+#     for the exact methods with stick, LM also with coulomb, in two steps,
+#     with the stiff upper block (both slaves; the outer tolerance 1e-11
+#     there, see compareStick.py) and with the coarse slave; frictionless it
+#     must fail (the control: the test can fail).
+#   the closed forms' self-test (c4fpost.cattaneo).
+
+# The issue's minimum for Cattaneo-Mindlin (a method listed here but not in
+# -listMethods is left out)
+FRICTION_CATTANEO_METHODS = ("lagrangeMultiplier", "augmentedLagrange", "penalty")
+# Methods that allow stick but not slip: coulomb with them is a FatalIOError
+# (Wriggers' remark 2.7.3 on the perturbed Lagrange functional)
+FRICTION_NO_SLIP = ("perturbedLagrange",)
+FRICTION_MODELS = ("frictionless", "stick", "coulomb")
+
+
+def list_friction_models():
+    """(models, None) from solidContactFoam -listFrictionModels, or (None,
+    reason) where the solver has no such option."""
+    rc, out = run(["solidContactFoam", "-listFrictionModels"], cwd=ROOT)
+    if rc:
+        lines = [x.strip() for x in out.splitlines() if x.strip()]
+        said = [x for x in lines if re.search(r"invalid|unknown|error", x, flags=re.I)]
+        return None, "solidContactFoam -listFrictionModels failed (rc=%d: %s)" % (
+            rc, (said or lines or ["no output"])[0])
+    return [m for m in out.split() if m], None
+
+
+def set_solid_tolerance(case, tol):
+    """The outer correctors' tolerance of solidMechanics in system/fvSolution."""
+    fv = os.path.join(case, "system/fvSolution")
+    text, n = re.subn(r"^(\s*tolerance\s+)1e-9;", r"\g<1>%s;" % tol, open(fv).read(),
+                      count=1, flags=re.M)
+    if n != 1:
+        raise RuntimeError("no 'tolerance 1e-9;' in " + fv)
+    open(fv, "w").write(text)
+
+
+def friction_fields_agree(res, ref, case, name, patch, tol):
+    """The friction state of the last times of two runs: contactStick
+    identical face by face, contactSlip to tol of its largest magnitude,
+    and contactReport's tangential force to tol."""
+    n = foamio.patch_face_cells(ref, patch).size
+    tr, tc = foamio.latest_time(ref), foamio.latest_time(case)
+    try:
+        sr = foamio.read_patch(os.path.join(ref, tr, "contactStick"), patch, n)
+        sc = foamio.read_patch(os.path.join(case, tc, "contactStick"), patch, n)
+        gr = foamio.read_patch(os.path.join(ref, tr, "contactSlip"), patch, n)
+        gc = foamio.read_patch(os.path.join(case, tc, "contactSlip"), patch, n)
+    except (OSError, KeyError, ValueError) as e:
+        res.add(name + "/friction_state", False, note="cannot read the friction fields: %s" % e)
+        return
+    differ = int((np.rint(sr) != np.rint(sc)).sum())
+    res.add(name + "/contactStick_equal", differ == 0, note="(%d faces differ)" % differ)
+    scale = float(np.abs(gr).max()) or 1.0
+    err = float(np.abs(gc - gr).max()) / scale
+    res.add(name + "/contactSlip_equal", err <= tol, err, 0.0, err, tol)
+    r, c = contactreport.last_row(ref, patch), contactreport.last_row(case, patch)
+    if r is None or c is None or not r.get("tangentialForce"):
+        res.add(name + "/tangential_force_equal", False, note="no tangential force reported")
+        return
+    err = abs(c["tangentialForce"] - r["tangentialForce"]) / abs(r["tangentialForce"])
+    res.add(name + "/tangential_force_equal", err <= tol, c["tangentialForce"],
+            r["tangentialForce"], err, tol)
+
+
+def friction_restart(res, finished, name, patch, max_correctors=3):
+    """Continue a finished frictional run for one more step at the load of
+    its last step (the tables clamp beyond their last time): with the
+    friction history written with the time (stick points, slip, stick
+    flags) it continues converged in at most max_correctors (issue 10's 3)
+    with the same forces and friction state (to 1e-6)."""
+    case = finished + "_restart"
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(finished, case, ignore=shutil.ignore_patterns("processor*", "VTK", "log.*"))
+    last = foamio.latest_time(finished)
+    nxt = "%g" % (float(last) + 1)
+    cd = os.path.join(case, "system/controlDict")
+    text = re.sub(r"^endTime\s+[^;]+;", "endTime %s;" % nxt, open(cd).read(), flags=re.M)
+    text = re.sub(r"^startFrom\s+[^;]+;", "startFrom latestTime;", text, flags=re.M)
+    open(cd, "w").write(text)
+    rc, out = run(["solidContactFoam"], cwd=case, log=os.path.join(case, "log.solidContactFoam"))
+    steps = re.findall(r"^Time = (\S+)\s+correctors = (\d+)", out, flags=re.M)
+    if rc or len(steps) != 1 or steps[0][0] != nxt:
+        res.add(name + "/run", False, note="rc=%d, steps %s, see %s" % (rc, steps, case))
+        return
+    ncorr = int(steps[0][1])
+    res.add(name + "/correctors", ncorr <= max_correctors, ncorr, 2, ncorr - 2,
+            max_correctors - 2)
+    r, c = contactreport.last_row(finished, patch), contactreport.last_row(case, patch)
+    if r and c and r.get("normalForce"):
+        err = abs(c["normalForce"] - r["normalForce"]) / abs(r["normalForce"])
+        res.add(name + "/normal_force_equal", err <= 1e-6, c["normalForce"], r["normalForce"],
+                err, 1e-6)
+    friction_fields_agree(res, finished, case, name, patch, 1e-6)
+
+
+def friction_refused(res, tutorial, name, method):
+    """A method that allows no slip with coulomb: the run must stop with a
+    FatalIOError that names the friction model, and write no time."""
+    case = fresh_copy(tutorial, name)
+    rc, out = run(["./Allrun", "-method", method, "-friction", "coulomb"], cwd=case,
+                  log=os.path.join(case, "log.Allrun"))
+    log = os.path.join(case, "log.solidContactFoam")
+    text = open(log).read() if os.path.exists(log) else ""
+    wrote = [d for d in os.listdir(case) if re.fullmatch(r"[1-9][0-9.e+-]*", d)]
+    ok = (rc != 0 and "FOAM FATAL IO ERROR" in text and "coulomb" in text and not wrote)
+    res.add(name + "/coulomb_refused", ok,
+            note="(rc=%d%s)" % (rc, "" if ok else ", see %s" % log))
+
+
+def friction_group(res):
+    models, reason = list_friction_models()
+    if models is None:
+        print("== friction (issue 10)", flush=True)
+        print("SKIP friction: %s; the frictional tutorials (cattaneoMindlin, slidingBlock,"
+              " contactPatchTest -shear) need a solver with friction models" % reason,
+              flush=True)
+        return
+    print("== friction: the closed forms (c4fpost.cattaneo self-test)", flush=True)
+    rc, out = run(["/usr/bin/python3", os.path.join(ROOT, "src/postProcessing/python/c4fpost/"
+                                                          "cattaneo.py")], cwd=WORK)
+    res.add("friction/cattaneo_closed_form", rc == 0,
+            note="" if rc == 0 else out.strip()[-1500:])
+    missing = [m for m in FRICTION_MODELS if m not in models]
+    res.add("friction/models_listed", not missing,
+            note="(%s)" % " ".join(models) if not missing else "missing: %s" % missing)
+    methods = list_methods()
+
+    # Cattaneo-Mindlin
+    cattaneo = {}
+    for method in [m for m in FRICTION_CATTANEO_METHODS if m in methods]:
+        print("== friction: cattaneoMindlin, %s, coulomb" % method, flush=True)
+        cattaneo[method] = tutorial_case(res, "cattaneoMindlin", "cattaneoMindlin_" + method,
+                                         ["-method", method])
+    if "lagrangeMultiplier" in cattaneo:
+        ref = cattaneo["lagrangeMultiplier"]
+        print("== friction: cattaneoMindlin on 2 processors (the cut through the stick zone)",
+              flush=True)
+        par = tutorial_case(res, "cattaneoMindlin", "cattaneoMindlinParallel",
+                            ["-method", "lagrangeMultiplier", "-parallel"])
+        if os.path.exists(os.path.join(par, "log.solidContactFoam")):
+            decomposed(res, par, "cattaneoMindlinParallel/decomposed", 2)
+            contact_serial_parallel_agree(res, ref, par, "cattaneoMindlinParallel", 1e-6)
+            serial_parallel_agree(res, ref, par, "cattaneoMindlinParallel/D_equals_serial", 1e-6)
+            friction_fields_agree(res, ref, par, "cattaneoMindlinParallel", "cylinderContact",
+                                  1e-6)
+        print("== friction: cattaneoMindlin restarted at the load of t = 2", flush=True)
+        friction_restart(res, ref, "cattaneoMindlinRestart", "cylinderContact")
+
+    # The sliding block: every method that allows slip
+    for method in methods:
+        if method in FRICTION_NO_SLIP:
+            print("== friction: slidingBlock, %s refuses coulomb" % method, flush=True)
+            friction_refused(res, "slidingBlock", "slidingBlock_" + method, method)
+            continue
+        print("== friction: slidingBlock, %s, coulomb" % method, flush=True)
+        tutorial_case(res, "slidingBlock", "slidingBlock_" + method, ["-method", method])
+
+    # The stick patch test
+    exact = [m for m in methods if (patchtest.method_check(m) or {}).get("kind") == "exact"]
+    for method in exact:
+        print("== friction: contactPatchTest -shear one, %s, stick" % method, flush=True)
+        tutorial_case(res, "contactPatchTest", "contactPatchTestStick_" + method,
+                      ["-method", method, "-friction", "stick", "-shear", "one"])
+    if "lagrangeMultiplier" in methods:
+        lm = ["-method", "lagrangeMultiplier"]
+        for tag, opts, edit in (
+                ("coulomb", ["-friction", "coulomb", "-shear", "one"], None),
+                ("twoSteps", ["-friction", "stick", "-shear", "two"], None),
+                ("upperSlave", ["-friction", "stick", "-shear", "one", "-slave", "upper"], None),
+                ("stiffUpper", ["-friction", "stick", "-shear", "one", "-materials", "stiffUpper"],
+                 lambda case: set_solid_tolerance(case, "1e-11")),
+                ("stiffUpperSlave", ["-friction", "stick", "-shear", "one", "-materials",
+                                     "stiffUpper", "-slave", "upper"],
+                 lambda case: set_solid_tolerance(case, "1e-11"))):
+            print("== friction: contactPatchTest %s, lagrangeMultiplier" % " ".join(opts),
+                  flush=True)
+            tutorial_case(res, "contactPatchTest", "contactPatchTestStick_lagrangeMultiplier_"
+                          + tag, lm + opts, edit=edit)
+        # The control: without friction the shear does not cross the
+        # interface, and the same check must fail by far (measured 0.84)
+        print("== friction: contactPatchTest -shear one, frictionless (must fail)", flush=True)
+        name = "contactPatchTestStick_frictionless"
+        case = fresh_copy("contactPatchTest", name)
+        checks_json = os.path.join(case, "checks.json")
+        rc, _ = run(["./Allrun"] + lm + ["-friction", "frictionless", "-shear", "one"], cwd=case,
+                    env=dict(os.environ, C4F_CHECKS_JSON=checks_json),
+                    log=os.path.join(case, "log.Allrun"))
+        checks = json.load(open(checks_json)) if os.path.exists(checks_json) else []
+        err = max([c["error"] for c in checks if "stress_max_rel_error" in c["name"]] or [0.0])
+        res.add(name + "/stick_check_fails", rc == 0 and err > 0.1,
+                note="(error %.3g: the frictionless state must miss the uniform one by more"
+                     " than 0.1)" % err)
 
 
 if __name__ == "__main__":
