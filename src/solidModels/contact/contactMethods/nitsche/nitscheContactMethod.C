@@ -92,6 +92,23 @@ void Foam::contactMethods::nitsche::correct
             cond.coupled[facei] = true;
             cond.compliance[facei] = 1/gamma;
             cond.explicitPressure[facei] = -sigmaN;
+
+            // A tied face (stick) is consistent tangentially too: its
+            // spring holds it about the mean tangential traction of the
+            // two bodies' cells, -(I - n n) sigma n, with the weights of
+            // sigma_n (the tangential Nitsche term of Chouly 2014, J. Math.
+            // Anal. Appl. 411:329, for Tresca friction)
+            const vector ts(state.cellStress[facei] & n);
+            const vector tm(state.masterCellStress[facei] & n);
+            const scalar ws =
+                weights_ == "stiffness"
+              ? c4f::contact::nitscheSlaveWeight
+                (
+                    state.stiffness[facei], state.masterStiffness[facei]
+                )
+              : 0.5;
+            const vector sn(ws*ts + (1 - ws)*tm);
+            cond.tangentialPressure0[facei] = -(sn - n*(n & sn));
         }
 
         cond.setActive(facei, active);

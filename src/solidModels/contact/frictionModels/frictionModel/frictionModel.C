@@ -46,19 +46,28 @@ Foam::vector Foam::frictionModel::tangentialGap
 {
     const vector& n = state.normal[facei];
     const vector& t = state.traction[facei];
-    vector G
+    const vector G
     (
         state.relative[facei]
       - state_.field<vector>("contactStickPoint")[facei]
-      + cond.compliance[facei]*(t - n*(n & t))
+      + cond.compliance[facei]*(t - n*(n & t) - lambdaT(cond, facei))
     );
+    return G - n*(n & G);
+}
+
+
+Foam::vector Foam::frictionModel::lambdaT
+(
+    const contactSlaveCondition& cond,
+    const label facei
+) const
+{
+    vector lambda(cond.tangentialPressure0[facei]);
     if (augmented())
     {
-        G -=
-            cond.compliance[facei]
-           *state_.field<vector>("contactTangentialMultiplier")[facei];
+        lambda += state_.field<vector>("contactTangentialMultiplier")[facei];
     }
-    return G - n*(n & G);
+    return lambda;
 }
 
 
@@ -69,11 +78,7 @@ void Foam::frictionModel::tie
 ) const
 {
     cond.tied[facei] = true;
-    if (augmented())
-    {
-        cond.tangentialMultiplier[facei] =
-            state_.field<vector>("contactTangentialMultiplier")[facei];
-    }
+    cond.tangentialMultiplier[facei] = lambdaT(cond, facei);
 }
 
 
@@ -125,6 +130,8 @@ void Foam::frictionModel::beginStep
 
     const scalarField& stick = state_["contactStick"];
 
+    // contactSlip already holds the last step's slip (updateSlip, at its
+    // last corrector); the stick point of a slipping face moves by it
     multipliersConverged_ = true;
     slipAtStepStart_ = state_.field<vector>("contactSlip");
     forAll(stick, facei)
@@ -136,9 +143,7 @@ void Foam::frictionModel::beginStep
         }
         else if (stick[facei] == 0)
         {
-            const vector G(tangentialGap(state, cond, facei));
-            slipAtStepStart_[facei] += G;
-            R += G;
+            R += tangentialGap(state, cond, facei);
         }
     }
 }
