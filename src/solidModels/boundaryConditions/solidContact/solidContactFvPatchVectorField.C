@@ -517,6 +517,39 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     state.reaction = pressure_;
     state.traction = traction_;
     state.relative = Df - pair_->slaveValues(pair_->masterFaceDisplacement());
+
+    // A tangential law needs the relative displacement at the same point on
+    // both faces: the face values corrected to each overlap's centroid by
+    // the cells' gradients (exact for linear fields)
+    List<List<vector>> stickCorrection;
+    if (friction_->hasTangentialLaw())
+    {
+        const word gradName("gradD");
+        const tensorField slaveGrad
+        (
+            patch().lookupPatchField<volTensorField, tensor>(gradName)
+           .patchInternalField()
+        );
+        const tensorField masterGrad
+        (
+            pair_->gatherMaster
+            (
+                master.patch().lookupPatchField<volTensorField, tensor>
+                (
+                    gradName
+                ).patchInternalField()()
+            )
+        );
+        stickCorrection = pair_->overlapCorrections(slaveGrad, masterGrad);
+        const List<scalarList>& w = pair_->overlapWeights();
+        forAll(stickCorrection, i)
+        {
+            forAll(stickCorrection[i], k)
+            {
+                state.relative[i] -= w[i][k]*stickCorrection[i][k];
+            }
+        }
+    }
     state.inRange = pair_->inRange();
     state.stiffness = state.K/state.h;
     {
@@ -575,6 +608,7 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     if (friction_->hasTangentialLaw())
     {
         in.stickPoint = friction_->state().field<vector>("contactStickPoint");
+        in.stickCorrection.transfer(stickCorrection);
     }
     in.tangentialTraction = cond_.tangentialTraction;
     in.tangentialMultiplier = cond_.tangentialMultiplier;

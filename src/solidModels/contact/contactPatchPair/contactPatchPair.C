@@ -417,12 +417,15 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
     overlapFaces_.setSize(slave_.size());
     overlapWeights_.setSize(slave_.size());
     overlapGaps_.setSize(slave_.size());
+    overlapCentroids_.setSize(slave_.size());
+    slaveCentres_ = x;
 
     forAll(overlapFaces_, facei)
     {
         overlapFaces_[facei].clear();
         overlapWeights_[facei].clear();
         overlapGaps_[facei].clear();
+        overlapCentroids_[facei].clear();
         if (!inRange_[facei])
         {
             continue;
@@ -495,12 +498,14 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
         DynamicList<label> faces;
         DynamicList<scalar> weights;
         DynamicList<scalar> gaps;
+        DynamicList<vector> cents;
         if (w.empty())
         {
             // No overlap: the projection's own face takes it all
             faces.append(hitFace_[facei]);
             weights.append(1);
             gaps.append(faceGap(hitFace_[facei], xs));
+            cents.append(x[facei]);
         }
         else
         {
@@ -511,13 +516,40 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
                     faces.append(cand[k]);
                     weights.append(w[k]);
                     gaps.append(faceGap(cand[k], centroids[k]));
+                    cents.append(c4fConvert::toFoam(centroids[k]));
                 }
             }
         }
         overlapFaces_[facei].transfer(faces);
         overlapWeights_[facei].transfer(weights);
         overlapGaps_[facei].transfer(gaps);
+        overlapCentroids_[facei].transfer(cents);
     }
+}
+
+
+Foam::List<Foam::List<Foam::vector>> Foam::contactPatchPair::overlapCorrections
+(
+    const tensorField& slaveGrad,
+    const tensorField& masterGrad
+) const
+{
+    List<List<vector>> delta(overlapFaces_.size());
+    forAll(overlapFaces_, i)
+    {
+        const labelList& faces = overlapFaces_[i];
+        delta[i].setSize(faces.size());
+        forAll(faces, k)
+        {
+            const label j = faces[k];
+            const vector& c = overlapCentroids_[i][k];
+            const vector xm(masterRefCentres_[j] + masterFaceD_[j]);
+            delta[i][k] =
+                ((c - xm) & masterGrad[j])
+              - ((c - slaveCentres_[i]) & slaveGrad[i]);
+        }
+    }
+    return delta;
 }
 
 

@@ -130,7 +130,11 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                     // sum_j w_ij D_fj) is zero in stick: held to the stick
                     // point R_i tangentially, closed normally; the explicit
                     // tractions enter whole
-                    const vector& R = in.stickPoint[i];
+                    vector R(in.stickPoint[i]);
+                    if (in.stickCorrection.size())
+                    {
+                        R += in.stickCorrection[i][k];
+                    }
                     offset.append
                     (
                        -gRef*n

@@ -91,7 +91,24 @@ void Foam::frictionModels::coulomb::correct
             state.pairStiffness[facei]
         );
 
-        if (r.slip)
+        // A slipping face on the cone's edge (|t_tr| = mu p_N to round-off:
+        // its slip has stopped, e.g. at a step of the same load) keeps
+        // slipping with the same traction instead of flipping with the
+        // sign of the round-off; only a trial clearly inside the cone
+        // sticks it again
+        const scalar bound = mu_*max(state.reaction[facei], scalar(0));
+        const vector trial(tT - state.pairStiffness[facei]*GT);
+        const bool onEdge =
+            !r.slip
+         && state_["contactStick"][facei] == 0
+         && bound > 0
+         && mag(trial) > (1 - edgeTolerance_)*bound;
+        if (onEdge)
+        {
+            cond.tangentialTraction[facei] = bound*trial/mag(trial);
+            setStick(facei, 0, cond);
+        }
+        else if (r.slip)
         {
             cond.tangentialTraction[facei] = c4fConvert::toFoam(r.traction);
             setStick(facei, 0, cond);
