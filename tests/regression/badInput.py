@@ -43,6 +43,10 @@ actions
 );
 """
 
+# contactPatchTest's friction model and Coulomb coefficient (0/D, slave role)
+FRICTION = r"^(\s*)friction\s+frictionless;"
+MU = r"^(\s*)mu\s+0\.3;\n"
+
 # name, tutorial, [(file, pattern, replacement)], expected texts in the output
 CASES = [
     ("unknownMaterialLaw", "plateHole",
@@ -111,25 +115,26 @@ CASES = [
      [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method lagrangeMultiplyer;")],
      ["FOAM FATAL IO ERROR", "Unknown method lagrangeMultiplyer", "Valid methods",
       "lagrangeMultiplier", "penalty"]),
-    # Friction (slave lowerTop)
+    # Friction (slave lowerTop). contactPatchTest's 0/D has its own
+    # `friction frictionless;` and `coulombCoeffs { mu 0.3; }` in the slave
+    # role (Allrun -friction sets the model): edit those, since a second
+    # `friction` entry before them would be overridden by the merge
     ("unknownFrictionModel", "contactPatchTest",
-     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method lagrangeMultiplier; friction coulumb;")],
+     [("0/D", FRICTION, r"\1friction coulumb;")],
      ["FOAM FATAL IO ERROR", "Unknown friction model coulumb", "entry 'friction'",
       "Valid friction models", "coulomb", "frictionless", "stick"]),
     ("coulombWithoutMu", "contactPatchTest",
-     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method lagrangeMultiplier; friction coulomb;")],
+     [("0/D", FRICTION, r"\1friction coulomb;"), ("0/D", MU, "")],
      ["FOAM FATAL IO ERROR", "Missing entry 'mu'", "coulombCoeffs", "lowerTop"]),
     ("negativeMu", "contactPatchTest",
-     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;",
-       r"\1method lagrangeMultiplier; friction coulomb; coulombCoeffs { mu -0.3; }")],
+     [("0/D", FRICTION, r"\1friction coulomb;"), ("0/D", MU, r"\1mu -0.3;\n")],
      ["FOAM FATAL IO ERROR", "Invalid mu -0.3", "coulombCoeffs", "lowerTop", "mu >= 0"]),
     ("stickWithCoeffs", "contactPatchTest",
-     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;",
-       r"\1method lagrangeMultiplier; friction stick; stickCoeffs { mu 0.3; }")],
+     [("0/D", FRICTION, r"\1friction stick; stickCoeffs { mu 0.3; }")],
      ["FOAM FATAL IO ERROR", "stick has no coefficients", "stickCoeffs", "mu"]),
     ("perturbedLagrangeCoulomb", "contactPatchTest",
-     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;",
-       r"\1method perturbedLagrange; friction coulomb; coulombCoeffs { mu 0.3; }")],
+     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method perturbedLagrange;"),
+      ("0/D", FRICTION, r"\1friction coulomb;")],
      ["FOAM FATAL IO ERROR", "'friction coulomb'", "perturbedLagrange", "no slip law",
       "remark 2.7.3", "frictionless and stick"]),
     ("frictionOnMaster", "contactPatchTest",
