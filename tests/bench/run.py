@@ -50,6 +50,15 @@ contactPatchTest (correctors, wall time, stress error against the exact
 stress), and the exact methods on hertzSphere at two mesh levels (10 and
 15 faces across a); markdown in methods.md, a bar chart in methods.png.
 
+Friction side by side (`run.py --only friction`, issue 10): cattaneoMindlin
+at -refine 1 and 2 for lagrangeMultiplier, augmentedLagrange and penalty
+(correctors per step, wall time, Q'/(mu P'), the stick-zone half-width and
+the RMS of q against Cattaneo-Mindlin, also at t = 1 where it should be
+0), slidingBlock with coulomb for every method (F_T/(mu F_N) - 1 in full
+slip; a method without a slip law is listed as refused) and the stick
+patch test for every method (correctors, stress error); markdown in
+friction.md, q's RMS against the faces across a in friction.png.
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
@@ -716,11 +725,258 @@ def methods_chart(rows, png):
     print("plot: %s" % png)
 
 
+# --------------------------------------------------------------------------
+# Friction (issue 10)
+FRICTION_CATTANEO_METHODS = ("lagrangeMultiplier", "augmentedLagrange", "penalty")
+CATTANEO_LEVELS = (1, 2)       # Allrun -refine N: N times the faces across a
+
+
+def step_log(case):
+    """Per load step of the solver's log: (correctors, multiplierUpdates)."""
+    path = os.path.join(case, "log." + SOLVER)
+    log = open(path).read() if os.path.exists(path) else ""
+    out = []
+    for m in re.finditer(r"^Time = \S+\s+correctors = (\d+)(.*)$", log, flags=re.M):
+        u = re.search(r"multiplierUpdates = (\d+)", m.group(2))
+        out.append((int(m.group(1)), int(u.group(1)) if u else 0))
+    return out
+
+
+def per_step(r, updates=False):
+    """'53 + 44' (correctors per step; with updates '222 + 169 (17 + 12)'),
+    * where a step did not converge."""
+    steps = step_log(r["case"])
+    if not steps:
+        return "-"
+    text = " + ".join("%d" % s[0] for s in steps)
+    if updates and any(s[1] for s in steps):
+        text += " (%s)" % " + ".join("%d" % s[1] for s in steps)
+    return text + ("" if r["converged"] else "*")
+
+
+def cattaneo_errors(case):
+    """compareCattaneo at t = 2 and the errors the bench tabulates: c of
+    contactStick and of q against the closed form in slave-face widths at
+    x = c; the RMS of q - closed form over |x| < a, and split into the
+    stick zone (|x| < c) and the slip zone, in units of mu p0; the RMS of
+    q at t = 1 (the normal load with every face stuck: identical materials
+    give q = 0, so it is the stick law's own noise); and the RMS of the
+    pressure against Hertz (units of p0) on the same faces."""
+    import compareCattaneo
+    res = compareCattaneo.compare(case, "2")
+    x, q, qRef, p = (np.array(res[k]) for k in ("x", "q", "qRef", "p"))
+    inA, inC = np.abs(x) < res["a"], np.abs(x) < res["c"]
+    mp0 = res["mu"] * res["p0"]
+
+    def rms(v, sel):
+        return float(np.sqrt(np.mean(v[sel] ** 2))) if sel.any() else float("nan")
+    from c4fpost import hertz
+    pH = hertz.pressure(x, res["P"], compareCattaneo.R, res["Es"])
+    first = compareCattaneo.compare(case, "1")
+    x1, q1 = np.array(first["x"]), np.array(first["q"])
+    # the face width at the centre: faces across the semi-width a
+    w0 = res["hC"]
+    return dict(res=res, faces=res["a"] / w0, ratio=res["ratio"],
+                cStick=(res["cStick"] - res["c"]) / res["hC"],
+                cQ=(res["cQ"] - res["c"]) / res["hC"],
+                rms=res["rms"], rmsStick=rms(q - qRef, inC) / mp0,
+                rmsSlip=rms(q - qRef, inA & ~inC) / mp0,
+                rmsT1=rms(q1, np.abs(x1) < first["a"]) / (first["mu"] * first["p0"]),
+                pRms=rms(p - pH, inA) / res["p0"])
+
+
+def friction_bench():
+    """Friction side by side (issue 10): cattaneoMindlin at two mesh
+    levels for FRICTION_CATTANEO_METHODS (correctors per step, solver wall
+    time, Q'/(mu P'), the stick-zone half-width c and the RMS of q against
+    Cattaneo-Mindlin, the stick noise at t = 1, the pressure's RMS against
+    Hertz); slidingBlock with coulomb for every method of -listMethods
+    (correctors per step, wall, F_T/(mu F_N) - 1 at the last step; a method
+    without a slip law is listed as refused); the stick patch test
+    (contactPatchTest -friction stick -shear one) for every method
+    (correctors, the stress error against the exact uniform state and its
+    spread). Markdown in WORK/friction.md, the q RMS against the faces
+    across a (log-log) in WORK/friction.png."""
+    sys.path.insert(0, os.path.join(ROOT, "tutorials/cattaneoMindlin/validation"))
+    sys.path.insert(0, os.path.join(ROOT, "tutorials/slidingBlock/validation"))
+    import compareSliding
+    import compareStick
+    methods = [m for m in sh("%s -listMethods" % SOLVER, ROOT).split() if m]
+    print("\n== friction: cattaneoMindlin (%s) at -refine %s, slidingBlock and the stick patch"
+          " test for %s" % (", ".join(FRICTION_CATTANEO_METHODS),
+                            " and ".join("%d" % n for n in CATTANEO_LEVELS), ", ".join(methods)),
+          flush=True)
+
+    def fmt(v, f="%.3g"):
+        return "-" if v is None or v != v else f % v
+
+    # Cattaneo-Mindlin at two mesh levels
+    cm = []
+    for m in [x for x in FRICTION_CATTANEO_METHODS if x in methods]:
+        for level in CATTANEO_LEVELS:
+            tag = "" if level == 1 else "_refine%d" % level
+            allrun = ["-method", m] + ([] if level == 1 else ["-refine", "%d" % level])
+            r = bench_case("friction_cattaneo_%s%s" % (m, tag),
+                           os.path.join(ROOT, "tutorials/cattaneoMindlin"), allrun=allrun)
+            row = dict(method=m, level=level, run=r)
+            if r["rc"] == 0 and r["steps"] == 2:
+                row.update(cattaneo_errors(r["case"]))
+                cells = re.search(r"^\s*cells:\s+(\d+)", sh("checkMesh -constant", r["case"]),
+                                  flags=re.M)
+                row["cells"] = int(cells.group(1)) if cells else None
+            cm.append(row)
+            print("  cattaneoMindlin %-20s -refine %d: %s correctors, %.1f s, q RMS %s of mu p0"
+                  % (m, level, per_step(r), r["wall"], fmt(row.get("rms"), "%.4f")), flush=True)
+    lines = ["| method | -refine (faces across a) | cells | correctors per step (updates) |"
+             " wall [s] | Q'/(mu P') | c error, contactStick [faces] | c error, q [faces] |"
+             " q RMS [% mu p0] | stick zone / slip zone [% mu p0] | q RMS at t = 1 [% mu p0] |"
+             " p RMS vs Hertz [% p0] |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for row in cm:
+        r = row["run"]
+        if "rms" not in row:
+            lines.append("| %s | %d | - | %s | %s | failed (rc=%d, see %s) | | | | | | |"
+                         % (row["method"], row["level"], per_step(r, True), fmt(r["wall"], "%.1f"),
+                            r["rc"], r["case"]))
+            continue
+        lines.append("| %s | %d (%.1f) | %s | %s | %.1f | %.4f | %+.2f | %+.2f | %.2f | %.2f / %.2f |"
+                     " %.2f | %.2f |" % (
+                         row["method"], row["level"], row["faces"], fmt(row.get("cells"), "%d"),
+                         per_step(r, True), r["wall"], row["ratio"], row["cStick"], row["cQ"],
+                         100 * row["rms"], 100 * row["rmsStick"], 100 * row["rmsSlip"],
+                         100 * row["rmsT1"], 100 * row["pRms"]))
+    lines += ["", "cattaneoMindlin (`Allrun -method <m> [-refine 2]`, coulomb mu 0.3): t = 1 the"
+              " normal load, t = 2 the tangential one (correctors per step; multiplier updates in"
+              " brackets). Faces across a: a over the slave face width at x = c. c error: the"
+              " stick-zone half-width from contactStick and from where q falls below mu p, minus"
+              " c = a sqrt(1 - Q'/(mu P')), in slave-face widths (the tests allow 1.5). q RMS: of"
+              " q - Cattaneo-Mindlin over |x| < a for the measured P' and Q' (the tests allow"
+              " 5 %), and split into |x| < c and c < |x| < a. q RMS at t = 1: with every face"
+              " stuck under the normal load identical materials give q = 0, so this is the"
+              " stick law's own noise. p RMS: the pressure against Hertz on the same faces."
+              " Wall: the solver alone."]
+    for m in FRICTION_CATTANEO_METHODS:
+        rr = [x for x in cm if x["method"] == m and "rms" in x]
+        if len(rr) == 2:
+            print("  %-20s q RMS %.4f -> %.4f of mu p0 (ratio %.2f for %.1fx the faces across a;"
+                  " first order would be %.2f)" % (m, rr[0]["rms"], rr[1]["rms"],
+                                                   rr[1]["rms"] / rr[0]["rms"],
+                                                   rr[1]["faces"] / rr[0]["faces"],
+                                                   rr[0]["faces"] / rr[1]["faces"]))
+
+    # slidingBlock, coulomb, every method
+    sb = ["", "| method | correctors per step (updates) | wall [s] |"
+          " F_T/(mu F_N) - 1, contactReport | F_T/(mu F_N) - 1, traction field |"
+          " faces slipping / in contact |", "| --- | --- | --- | --- | --- | --- |"]
+    for m in methods:
+        r = bench_case("friction_sliding_%s" % m, os.path.join(ROOT, "tutorials/slidingBlock"),
+                       allrun=["-method", m])
+        if r["rc"] != 0 or not r["steps"]:
+            log = os.path.join(r["case"], "log." + SOLVER)
+            text = open(log).read() if os.path.exists(log) else ""
+            why = ("refused: FatalIOError (no slip law)" if "FOAM FATAL IO ERROR" in text
+                   and "coulomb" in text else "failed (rc=%d, see %s)" % (r["rc"], r["case"]))
+            sb.append("| %s | %s | | | | |" % (m, why))
+            print("  slidingBlock %-20s %s" % (m, why), flush=True)
+            continue
+        res = compareSliding.compare(r["case"])
+        last = res["steps"][-1]
+        sb.append("| %s | %s | %.2f | %s | %s | %s / %s |" % (
+            m, per_step(r, True).replace(" + ", ", "), r["wall"],
+            fmt(last.get("ratio_report", float("nan")) - 1.0, "%.1e"),
+            fmt(last["ratio"] - 1.0, "%.1e"), last.get("slipping", "-"),
+            last.get("inContact", "-")))
+        print("  slidingBlock %-20s %s correctors, F_T/(mu F_N) - 1 = %.1e" % (
+            m, per_step(r), last.get("ratio_report", float("nan")) - 1.0), flush=True)
+    sb += ["", "slidingBlock (`Allrun -method <m>`, coulomb mu 0.3): five steps, the press and"
+           " four pushes, the last two in full slip; F_T/(mu F_N) - 1 at the last step (the tests"
+           " allow 1e-6): contactReport's sum |t_T| A over sum p_N A, and the same sums from the"
+           " written contactTraction and contactPressure."]
+
+    # the stick patch test, every method
+    st = ["", "| method | kind | correctors | multiplier updates | wall [s] |"
+          " stress error against the exact state | spread (max - min) over the cells |"
+          " sigma_xy / tau - 1 | sigma_yy / exact - 1 |",
+          "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for m in methods:
+        r = bench_case("friction_stick_%s" % m, os.path.join(ROOT, "tutorials/contactPatchTest"),
+                       allrun=["-method", m, "-friction", "stick", "-shear", "one"])
+        if r["rc"] != 0 or not r["steps"]:
+            st.append("| %s | | failed (rc=%d, see %s) | | | | | | |" % (m, r["rc"], r["case"]))
+            print("  stick patch test %-20s failed" % m, flush=True)
+            continue
+        res = compareStick.compare(r["case"])
+        info = res["times"][-1]
+        steps = step_log(r["case"])
+        st.append("| %s | %s | %s | %d | %.2f | %.1e | %.1e | %+.1e | %+.1e |" % (
+            m, res["kind"], per_step(r), sum(s[1] for s in steps), r["wall"],
+            max(info["err"].values()), max(info["spread"].values()),
+            info["mean"]["xy"] / info["exact"]["xy"] - 1.0,
+            info["mean"]["yy"] / info["exact"]["yy"] - 1.0))
+        print("  stick patch test %-20s %s correctors, stress error %.1e" % (
+            m, per_step(r), max(info["err"].values())), flush=True)
+    st += ["", "The stick patch test (`contactPatchTest/Allrun -method <m> -friction stick -shear"
+           " one`): uniform compression and shear across 10 on 7 non-matching faces. Stress"
+           " error: max over the cells and the components of abs(sigma - sigma_exact) over"
+           " max(abs(sigma_yy), abs(sigma_xy)) (the tests allow 1e-6 for the exact methods);"
+           " spread: the same of max - min over the cells (uniformity). The penalty family"
+           " (a tangential spring eps_T = eps_N in series with the column) is uniform but offset:"
+           " the last two columns are the mean stresses against the exact ones."]
+    text = "\n".join(lines + sb + st)
+    print(text)
+    with open(os.path.join(WORK, "friction.md"), "w") as f:
+        f.write("# contact4foam friction (make bench)\n\n" + text + "\n")
+    friction_chart(cm, os.path.join(WORK, "friction.png"))
+
+
+def friction_chart(rows, png):
+    """The RMS of q - Cattaneo-Mindlin (and the stick noise at t = 1)
+    against the faces across a, log-log, one line per method; the
+    pressure's RMS against Hertz of the first method beside them."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import matplotlib.ticker
+    fig, ax = plt.subplots(figsize=(9.5, 4.8))
+    faces = []
+    for i, m in enumerate(FRICTION_CATTANEO_METHODS):
+        rr = [r for r in rows if r["method"] == m and "rms" in r]
+        if not rr:
+            continue
+        f = [r["faces"] for r in rr]
+        faces += f
+        ax.loglog(f, [100 * r["rms"] for r in rr], "o-", color="C%d" % i,
+                  label="%s: q RMS at t = 2" % m)
+        ax.loglog(f, [100 * r["rmsT1"] for r in rr], "s:", mfc="none", color="C%d" % i,
+                  label="%s: q RMS at t = 1 (exact 0)" % m)
+        if m == FRICTION_CATTANEO_METHODS[0]:
+            ax.loglog(f, [100 * r["pRms"] for r in rr], "^-.", color="C7",
+                      label="%s: p RMS against Hertz [%% of $p_0$]" % m)
+    if faces:
+        f0 = min(faces)
+        ref = [r for r in rows if "rms" in r][0]
+        ff = np.array([f0, max(faces)])
+        ax.loglog(ff, 100 * ref["rms"] * f0 / ff, "k--", lw=1, label="first order")
+    ax.axhline(5, color="k", ls=":", lw=1, label="test tolerance 5 %")
+    ax.set_xlabel("slave faces across a")
+    ax.set_ylabel(r"RMS of q - Cattaneo-Mindlin [% of $\mu p_0$]" "\n"
+                  r"(of p - Hertz: % of $p_0$)")
+    ax.set_title("cattaneoMindlin, coulomb mu 0.3 (make bench)", fontsize=10)
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+        axis.set_minor_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    print("plot: %s" % png)
+
+
 def main():
     import argparse
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa",
-                                       "perturbedLagrange", "methods"),
+                                       "perturbedLagrange", "methods", "friction"),
                     help="run one part only (convergence includes hertz's runs)")
     args = ap.parse_args()
     t0 = time.time()
@@ -737,6 +993,8 @@ def main():
         perturbed_bench()
     if args.only in (None, "methods"):
         methods_bench()
+    if args.only in (None, "friction"):
+        friction_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 

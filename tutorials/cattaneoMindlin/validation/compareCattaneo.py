@@ -24,10 +24,11 @@ component of p x/(2R) there (10 % of mu p). The solver's traction is
 p n + q with n that normal. Here n and the unit tangent s (oriented along
 +x) are those of the deformed slave surface, the polyline through the face
 centres moved by their D (central differences along x); t.n - p is
-printed (measured 3e-7 of p0). The cylinder's top is moved along +x, so
-the block holds the cylinder back: the friction traction on the cylinder
-points along -x, and the measured q of a face is -t.s, positive when it
-opposes the applied motion. A friction force in the wrong direction makes
+printed (measured 1.4e-4 of p0 with coulomb, 3e-7 frictionless: the
+polyline's normal against the solver's). The cylinder's top is moved
+along +x, so the block holds the cylinder back: the friction traction on
+the cylinder points along -x, and the measured q of a face is -t.s,
+positive when it opposes the applied motion. A friction force in the wrong direction makes
 Q' negative and fails the load-ratio check.
 
 Loads (per unit length; the model is one cell, dz, thick and FULL):
@@ -64,7 +65,10 @@ Checks:
     hertzCylinder's pressure on the same faces is within 1.2 % of p0 at the
     peak, with odd-even oscillations of about 1 %, and q inherits mu times
     those plus the stick-zone edge's sqrt, which the faces sample
-    coarsely).
+    coarsely). Measured 4.90 % (lagrangeMultiplier), 4.82 % (penalty):
+    most of it is the stick law's own face-to-face noise (6 % of mu p0 at
+    t = 1, where q should be 0), which does not fall with the mesh
+    (DEVELOPERS.md, "Friction in the implicit interface").
   - P' and Q' from contactReport against the sums above (1 %).
 """
 import os
