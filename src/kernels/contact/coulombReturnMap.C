@@ -75,6 +75,8 @@ CoulombResult coulombReturnMap
     const double bound = (pN > 0) ? mu*pN : 0.0;
 
     CoulombResult r;
+    r.trial = tTrial;
+    r.bound = bound;
 
     if (!(bound > 0))
     {

@@ -516,14 +516,16 @@ void Foam::solidContactFvPatchVectorField::updateSlave()
     state.delta = 1.0/patch().deltaCoeffs();
     state.reaction = pressure_;
     state.traction = traction_;
-    state.relative = Df - pair_->slaveValues(pair_->masterFaceDisplacement());
-
     // A tangential law needs the relative displacement at the same point on
     // both faces: the face values corrected to each overlap's centroid by
-    // the cells' gradients (exact for linear fields)
+    // the cells' gradients (exact for linear fields); frictionless faces
+    // need neither
     List<List<vector>> stickCorrection;
     if (friction_->hasTangentialLaw())
     {
+        state.relative =
+            Df - pair_->slaveValues(pair_->masterFaceDisplacement());
+
         const word gradName("gradD");
         const tensorField slaveGrad
         (

@@ -124,46 +124,31 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                 mf.append(j);
                 area.append(weights[i][k]*magS[i]);
                 coeff.append(area.last()*kij);
+                // The normal law's offset, and the explicit tractions; a
+                // face that is not tied keeps their part along n
+                const scalar bN = -gRef + in.compliance[i]*in.pressure0[i];
+                const vector bC(rs*in.slaveC[i] - rm*in.masterC[j]);
                 if (tied_[i])
                 {
                     // The vector gap G = gRef n - (I - n n) R_i + (D_fi -
                     // sum_j w_ij D_fj) is zero in stick: held to the stick
-                    // point R_i tangentially, closed normally; the explicit
-                    // tractions enter whole
+                    // point R_i tangentially (at the overlap's centroid),
+                    // closed normally, about the tangential multiplier
                     vector R(in.stickPoint[i]);
                     if (in.stickCorrection.size())
                     {
                         R += in.stickCorrection[i][k];
                     }
-                    offset.append
-                    (
-                       -gRef*n
-                      + (R - n*(n & R))
-                      + rs*in.slaveC[i]
-                      - rm*in.masterC[j]
-                      + in.compliance[i]
-                       *(
-                            in.pressure0[i]*n
-                          + (
-                                in.tangentialMultiplier.size()
-                              ? in.tangentialMultiplier[i]
-                              : vector::zero
-                            )
-                        )
-                    );
+                    vector b(bN*n + bC + R - n*(n & R));
+                    if (in.tangentialMultiplier.size())
+                    {
+                        b += in.compliance[i]*in.tangentialMultiplier[i];
+                    }
+                    offset.append(b);
                 }
                 else
                 {
-                    offset.append
-                    (
-                        n
-                       *(
-                           -gRef
-                          + rs*(in.slaveC[i] & n)
-                          - rm*(in.masterC[j] & n)
-                          + in.compliance[i]*in.pressure0[i]
-                        )
-                    );
+                    offset.append(n*(bN + (bC & n)));
                 }
             }
         }

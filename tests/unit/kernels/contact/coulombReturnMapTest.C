@@ -144,6 +144,10 @@ TEST(coulombReturnMap, slipReturnsToTheCoulombCone)
     EXPECT_TRUE(r.slip);
     EXPECT_NEAR(r.traction.norm(), mu*pN, 1e-12*mu*pN);
 
+    // The trial and the bound it was judged against, as the glue sees them
+    EXPECT_LT((r.trial - tTr).norm(), 1e-12*tTr.norm());
+    EXPECT_EQ(r.bound, mu*pN);
+
     // Radial return: parallel to the trial and pointing the same way
     EXPECT_LT(r.traction.cross(tTr).norm(), 1e-12*r.traction.norm()*tTr.norm());
     EXPECT_GT(r.traction.dot(tTr), 0);

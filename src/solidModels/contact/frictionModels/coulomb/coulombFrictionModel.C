@@ -63,12 +63,9 @@ void Foam::frictionModels::coulomb::correct
     contactSlaveCondition& cond
 )
 {
+    releaseAll(cond);
     forAll(cond.tied, facei)
     {
-        cond.tied[facei] = false;
-        cond.tangentialTraction[facei] = Zero;
-        cond.tangentialMultiplier[facei] = Zero;
-
         if (!cond.coupled[facei])
         {
             setStick(facei, -1, cond);
@@ -77,15 +74,11 @@ void Foam::frictionModels::coulomb::correct
         }
 
         const vector& n = state.normal[facei];
-        const vector& t = state.traction[facei];
-        const vector tT(t - n*(n & t));
-        const vector GT(tangentialGap(state, cond, facei));
-
         const c4f::contact::CoulombResult r = c4f::contact::coulombReturnMap
         (
             c4fConvert::toEigen(n),
-            c4fConvert::toEigen(tT),
-            c4fConvert::toEigen(GT),
+            c4fConvert::toEigen(tangential(n, state.traction[facei])),
+            c4fConvert::toEigen(tangentialGap(state, cond, facei)),
             state.reaction[facei],
             mu_,
             state.pairStiffness[facei]
@@ -96,16 +89,15 @@ void Foam::frictionModels::coulomb::correct
         // slipping with the same traction instead of flipping with the
         // sign of the round-off; only a trial clearly inside the cone
         // sticks it again
-        const scalar bound = mu_*max(state.reaction[facei], scalar(0));
-        const vector trial(tT - state.pairStiffness[facei]*GT);
         const bool onEdge =
             !r.slip
          && state_["contactStick"][facei] == 0
-         && bound > 0
-         && mag(trial) > (1 - edgeTolerance_)*bound;
+         && r.bound > 0
+         && r.trial.norm() > (1 - edgeTolerance_)*r.bound;
         if (onEdge)
         {
-            cond.tangentialTraction[facei] = bound*trial/mag(trial);
+            cond.tangentialTraction[facei] =
+                c4fConvert::toFoam(r.bound*r.trial.normalized());
             setStick(facei, 0, cond);
         }
         else if (r.slip)

@@ -45,14 +45,14 @@ Foam::vector Foam::frictionModel::tangentialGap
 ) const
 {
     const vector& n = state.normal[facei];
-    const vector& t = state.traction[facei];
-    const vector G
+    return tangential
     (
+        n,
         state.relative[facei]
       - state_.field<vector>("contactStickPoint")[facei]
-      + cond.compliance[facei]*(t - n*(n & t) - lambdaT(cond, facei))
+      + cond.compliance[facei]
+       *(tangential(n, state.traction[facei]) - lambdaT(cond, facei))
     );
-    return G - n*(n & G);
 }
 
 
@@ -68,6 +68,14 @@ Foam::vector Foam::frictionModel::lambdaT
         lambda += state_.field<vector>("contactTangentialMultiplier")[facei];
     }
     return lambda;
+}
+
+
+void Foam::frictionModel::releaseAll(contactSlaveCondition& cond)
+{
+    cond.tied = false;
+    cond.tangentialTraction = Zero;
+    cond.tangentialMultiplier = Zero;
 }
 
 
@@ -129,6 +137,7 @@ void Foam::frictionModel::beginStep
     }
 
     const scalarField& stick = state_["contactStick"];
+    vectorField& R = state_.field<vector>("contactStickPoint");
 
     // contactSlip already holds the last step's slip (updateSlip, at its
     // last corrector); the stick point of a slipping face moves by it
@@ -136,14 +145,13 @@ void Foam::frictionModel::beginStep
     slipAtStepStart_ = state_.field<vector>("contactSlip");
     forAll(stick, facei)
     {
-        vector& R = state_.field<vector>("contactStickPoint")[facei];
         if (stick[facei] < 0)
         {
-            R = state.relative[facei];
+            R[facei] = state.relative[facei];
         }
         else if (stick[facei] == 0)
         {
-            R += tangentialGap(state, cond, facei);
+            R[facei] += tangentialGap(state, cond, facei);
         }
     }
 }
@@ -175,13 +183,12 @@ bool Foam::frictionModel::updateMultipliers
     scalar lambdaMax = 0;
     forAll(lambda, facei)
     {
-        vector lambdaNew(Zero);
-        if (cond.coupled[facei])
-        {
-            const vector& n = state.normal[facei];
-            const vector& t = state.traction[facei];
-            lambdaNew = t - n*(n & t);
-        }
+        const vector lambdaNew
+        (
+            cond.coupled[facei]
+          ? tangential(state.normal[facei], state.traction[facei])
+          : vector::zero
+        );
         dLambda = max(dLambda, mag(lambdaNew - lambda[facei]));
         lambdaMax = max(lambdaMax, mag(lambdaNew));
         lambda[facei] = lambdaNew;

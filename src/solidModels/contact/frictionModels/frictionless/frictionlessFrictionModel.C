@@ -40,8 +40,7 @@ void Foam::frictionModels::frictionless::correct
     contactSlaveCondition& cond
 )
 {
-    cond.tied = false;
-    cond.tangentialTraction = Zero;
+    releaseAll(cond);
 }
 
 

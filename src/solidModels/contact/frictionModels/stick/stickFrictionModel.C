@@ -42,11 +42,9 @@ void Foam::frictionModels::stick::correct
     contactSlaveCondition& cond
 )
 {
-    cond.tangentialTraction = Zero;
-    cond.tangentialMultiplier = Zero;
+    releaseAll(cond);
     forAll(cond.tied, facei)
     {
-        cond.tied[facei] = false;
         if (cond.coupled[facei])
         {
             tie(facei, cond);
