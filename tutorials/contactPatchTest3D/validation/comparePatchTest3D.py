@@ -149,14 +149,13 @@ def rotation_from_mesh(case):
 
 
 def variant(case):
-    """(contact, method): contact is False when 0/D gives the slave the
-    exact state ($slaveExact, Allrun -noContact)."""
-    path = os.path.join(case, "0", "D")
-    text = _strip(path)
-    bf = text[re.search(r"\bboundaryField\b", text).end():]
-    m = re.search(r"\b%s\s*\{\s*\$(\w+)\s*;" % SLAVE, bf)
-    contact = not (m and m.group(1) == "slaveExact")
-    return contact, hertz.read_entry(path, "method")
+    """(contact, method): contact is False when the slave patch's entry of
+    0/D is not a solidContact (Allrun -noContact gives it the exact state,
+    slaveExact); method is its `method` (None without contact)."""
+    text = hertz._strip(open(os.path.join(case, "0", "D")).read())
+    slave = hertz._sub_dict(hertz._sub_dict(text, "boundaryField"), SLAVE)
+    contact = hertz._entry(slave, "type") == "solidContact"
+    return contact, (hertz._entry(slave, "method") if contact else None)
 
 
 def top_displacement(case):
