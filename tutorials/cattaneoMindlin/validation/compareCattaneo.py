@@ -74,16 +74,9 @@ Checks:
 import os
 import sys
 
-# In the repository the package is three levels up; a copied case finds it
-# through $C4F_ROOT, which etc/bashrc exports
-for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
-           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
-    if os.path.isdir(os.path.join(_p, "c4fpost")):
-        sys.path.insert(0, _p)
-        break
-from c4fpost import cattaneo, contactreport, foamio, hertz, report  # noqa: E402
+from c4fpost import cattaneo, contactreport, foamio, hertz, report
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 NAME = "cattaneoMindlin"
 R = 0.1                   # cylinder radius [m], system/blockMeshDict
@@ -114,19 +107,19 @@ def check(name, value, reference, error, tolerance, units, note=""):
 
 def compare(case, time=None):
     time = time or foamio.latest_time(case)
-    E, nu, ps = hertz.elastic_constants(case, "cylinder")
+    E, nu, ps = foamio.elastic_constants(case, "cylinder")
     Es = hertz.contact_modulus(E, 0.0 if ps else nu)
     d0 = os.path.join(case, "0", "D")
-    mu = float(hertz.read_coeff(d0, "coulombCoeffs", "mu"))
+    mu = float(foamio.read_coeff(d0, "coulombCoeffs", "mu"))
     method = friction = None
     try:
-        method = hertz.read_entry(d0, "method")
-        friction = hertz.read_entry(d0, "friction")
+        method = foamio.read_entry(d0, "method")
+        friction = foamio.read_entry(d0, "friction")
     except KeyError:
         pass
-    dz = hertz.thickness(case)
+    dz = foamio.thickness(case)
 
-    Cf, Sf = hertz.patch_geometry(case, SLAVE)
+    Cf, Sf = foamio.patch_geometry(case, SLAVE)
     n = Cf.shape[0]
     area = np.linalg.norm(Sf, axis=1)
     order = np.argsort(Cf[:, 0])

@@ -28,16 +28,9 @@ import shutil
 import subprocess
 import sys
 
-# In the repository the package is three levels up; a copied case finds it
-# through $C4F_ROOT, which etc/bashrc exports
-for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
-           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
-    if os.path.isdir(os.path.join(_p, "c4fpost")):
-        sys.path.insert(0, _p)
-        break
-from c4fpost import cattaneo, foamio, hertz  # noqa: E402
+from c4fpost import cattaneo, foamio, hertz
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 R = 0.1
 SLAVE, MASTER = "cylinderContact", "blockContact"
@@ -58,11 +51,11 @@ def main():
     args = ap.parse_args()
 
     case = os.path.abspath(args.case)
-    dz = hertz.thickness(case)
-    E, nu, _ = hertz.elastic_constants(case, "cylinder")
+    dz = foamio.thickness(case)
+    E, nu, _ = foamio.elastic_constants(case, "cylinder")
     Es = hertz.contact_modulus(E, nu)
-    Cs, Ss = hertz.patch_geometry(case, SLAVE)
-    Cm, Sm = hertz.patch_geometry(case, MASTER)
+    Cs, Ss = foamio.patch_geometry(case, SLAVE)
+    Cm, Sm = foamio.patch_geometry(case, MASTER)
     tr = foamio.read_patch(os.path.join(case, "1", "contactTraction"), SLAVE, len(Cs))
     P = float(np.sum(tr[:, 1] * np.linalg.norm(Ss, axis=1))) / dz
     Q = args.ratio * args.mu * P

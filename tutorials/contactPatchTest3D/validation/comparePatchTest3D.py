@@ -102,18 +102,10 @@ last normalForce likewise.
 """
 import os
 import re
-import sys
 
-# In the repository the package is three levels up; a copied case finds it
-# through $C4F_ROOT, which etc/bashrc exports
-for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
-           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
-    if os.path.isdir(os.path.join(_p, "c4fpost")):
-        sys.path.insert(0, _p)
-        break
-from c4fpost import foamio, hertz, patchtest, report  # noqa: E402
+from c4fpost import elastic, foamio, patchtest, report
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 NAME = "contactPatchTest3D"
 DELTA = 0.01    # downward displacement of upperTop [m], 0/D
@@ -138,7 +130,7 @@ def _strip(path):
 def rotation_from_mesh(case):
     """R with columns R e_x, R e_y, R e_z, from the patch normals."""
     def unit_normal(patch):
-        _, Sf = hertz.patch_geometry(case, patch)
+        _, Sf = foamio.patch_geometry(case, patch)
         n = Sf.sum(axis=0)
         return n / np.linalg.norm(n)
     ez = unit_normal(TOP)
@@ -152,10 +144,10 @@ def variant(case):
     """(contact, method): contact is False when the slave patch's entry of
     0/D is not a solidContact (Allrun -noContact gives it the exact state,
     slaveExact); method is its `method` (None without contact)."""
-    text = hertz._strip(open(os.path.join(case, "0", "D")).read())
-    slave = hertz._sub_dict(hertz._sub_dict(text, "boundaryField"), SLAVE)
-    contact = hertz._entry(slave, "type") == "solidContact"
-    return contact, (hertz._entry(slave, "method") if contact else None)
+    text = foamio.strip(open(os.path.join(case, "0", "D")).read())
+    slave = foamio.sub_dict(foamio.sub_dict(text, "boundaryField"), SLAVE)
+    contact = foamio.entry(slave, "type") == "solidContact"
+    return contact, (foamio.entry(slave, "method") if contact else None)
 
 
 def top_displacement(case):
@@ -250,14 +242,14 @@ def compare(case):
     except FileNotFoundError:
         return no_result(case, contact, method,
                          "no time written: see log.solidContactFoam")
-    E, nu, planeStress = hertz.elastic_constants(case)
+    E, nu, planeStress = foamio.elastic_constants(case)
     if planeStress:
         raise SystemExit("%s: planeStress yes makes no sense in 3D" % NAME)
-    K = hertz.impK(E, nu)
+    K = elastic.impK(E, nu)
     exact = -E * DELTA / L
 
     R = rotation_from_mesh(case)
-    C, V = hertz.cell_centres_volumes(case)
+    C, V = foamio.cell_centres_volumes(case)
     Cr = C @ R                          # x' = R^T x, row by row
     Cf, area, slaveCells, h = TEST.slave_geometry(case, V)
     masterCells = foamio.patch_face_cells(case, MASTER)

@@ -9,7 +9,7 @@ Data (latest time or --time, reference configuration): contactPressure on the sl
 patch (cylinderContact, or blockContact after Allrun -slave block: the
 patch with `master no` in the written D; positive in compression), its
 face centres and area vectors from constant/polyMesh
-(c4fpost.hertz.patch_geometry).
+(c4fpost.foamio.patch_geometry).
 
 Materials (constant/mechanicalProperties, one law or a zoned law with the
 zones cylinder and block): E* from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
@@ -69,16 +69,9 @@ import json
 import os
 import sys
 
-# In the repository the package is three levels up; a copied case finds it
-# through $C4F_ROOT, which etc/bashrc exports
-for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
-           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
-    if os.path.isdir(os.path.join(_p, "c4fpost")):
-        sys.path.insert(0, _p)
-        break
-from c4fpost import foamio, hertz, patchtest, report, contactreport  # noqa: E402
+from c4fpost import contactreport, foamio, hertz, patchtest, report
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 R = 0.1                   # cylinder radius [m], system/blockMeshDict
 PATCHES = ("cylinderContact", "blockContact")
@@ -89,7 +82,7 @@ A_TOL_FACES = 1.5         # slave face widths at x = a
 def contact_modulus(case, estar):
     """E* of the two bodies, or of the block alone (estar == 'block'), and
     a one-line description of the materials."""
-    mats = hertz.materials(case)
+    mats = foamio.materials(case)
     if None in mats:
         E, nu, ps = mats[None]
         # Plane stress would use E* = E/2 (nu -> 0 in the plane-strain formula)
@@ -111,9 +104,9 @@ def contact_modulus(case, estar):
 def interface_law(case, time):
     """c_N and n of constitutiveLawCoeffs in the D written at `time` (the
     slave's entry: the coefficients the run used, macros expanded)."""
-    text = hertz._strip(open(os.path.join(case, time, "D")).read())
-    coeffs = hertz._sub_dict(text, "constitutiveLawCoeffs")
-    return dict(cN=float(hertz._entry(coeffs, "cN")), n=float(hertz._entry(coeffs, "n")))
+    text = foamio.strip(open(os.path.join(case, time, "D")).read())
+    coeffs = foamio.sub_dict(text, "constitutiveLawCoeffs")
+    return dict(cN=float(foamio.entry(coeffs, "cN")), n=float(foamio.entry(coeffs, "n")))
 
 
 def no_contact(time, wx, slave):
@@ -134,9 +127,9 @@ def compare(case, estar="both", time=None):
     time = time or foamio.latest_time(case)
     slave = patchtest.slave_patch(case, time, PATCHES)
     Es, materials = contact_modulus(case, estar)
-    dz = hertz.thickness(case)
+    dz = foamio.thickness(case)
 
-    Cf, Sf = hertz.patch_geometry(case, slave)
+    Cf, Sf = foamio.patch_geometry(case, slave)
     n = Cf.shape[0]
     area = np.linalg.norm(Sf, axis=1)
     nf = Sf / area[:, None]
@@ -190,7 +183,7 @@ def compare(case, estar="both", time=None):
 
     method = None
     try:
-        method = hertz.read_entry(os.path.join(case, "0", "D"), "method")
+        method = foamio.read_entry(os.path.join(case, "0", "D"), "method")
     except (KeyError, OSError):
         pass
 

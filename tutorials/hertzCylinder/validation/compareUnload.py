@@ -74,17 +74,10 @@ import math
 import os
 import sys
 
-_HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, _HERE)
-for _p in (os.path.join(_HERE, "../../../src/postProcessing/python"),
-           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
-    if os.path.isdir(os.path.join(_p, "c4fpost")):
-        sys.path.insert(0, _p)
-        break
-import compareHertz  # noqa: E402
-from c4fpost import foamio, hertz, patchtest, report, contactreport  # noqa: E402
+import compareHertz
+from c4fpost import contactreport, elastic, foamio, hertz, patchtest, report
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 NAME = "hertzCylinder"
 FORCE_TOL = 1e-6          # of F_N(t = 1)
@@ -108,13 +101,13 @@ def eps_of_faces(case, slave, method):
     if method not in ("augmentedLagrange", "crossConstraint"):
         return None
     text = open(os.path.join(case, "0", "D")).read()
-    body = hertz._sub_dict(hertz._strip(text), method + "Coeffs")
-    s = float(hertz._entry(body, "penaltyScale", 1.0))
-    mats = hertz.materials(case)
+    body = foamio.sub_dict(foamio.strip(text), method + "Coeffs")
+    s = float(foamio.entry(body, "penaltyScale", 1.0))
+    mats = foamio.materials(case)
     E, nu, ps = mats[None] if None in mats else mats[slave.replace("Contact", "")]
-    K = hertz.impK(E, nu, ps)
-    _, V = hertz.cell_centres_volumes(case)
-    _, Sf = hertz.patch_geometry(case, slave)
+    K = elastic.impK(E, nu, ps)
+    _, V = foamio.cell_centres_volumes(case)
+    _, Sf = foamio.patch_geometry(case, slave)
     h = V[foamio.patch_face_cells(case, slave)] / np.linalg.norm(Sf, axis=1)
     return s * K / h
 
@@ -214,8 +207,8 @@ def compare(case, estar="both"):
                         rows[-1]["activeFaces"], 0, "faces"))
 
     # The lifted state: rigid motions, no stress
-    Cf, Sf = hertz.patch_geometry(case, slave)
-    CfM, _ = hertz.patch_geometry(case, master)
+    Cf, Sf = foamio.patch_geometry(case, slave)
+    CfM, _ = foamio.patch_geometry(case, master)
     n = Cf.shape[0]
     D3 = os.path.join(case, LIFTED, "D")
     nFaces = {p: v[1] for p, v in foamio.read_boundary(case).items()}

@@ -13,15 +13,12 @@ run by each case's Allrun; this script only plots. The PNG goes to the
 current directory unless --png names another path.
 """
 import argparse
-import os
 import sys
 
-_HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, _HERE)
-import compareHertz  # noqa: E402  (puts c4fpost on the path)
-from c4fpost import hertz, patchtest  # noqa: E402
+import compareHertz
+from c4fpost import hertz, patchtest
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 
 def main():

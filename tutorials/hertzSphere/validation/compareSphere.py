@@ -8,7 +8,7 @@ them with --json.
 Data (latest time or --time, reference configuration): contactPressure and
 contactActive on the slave patch sphereContact (positive in compression),
 its face centres and area vectors from constant/polyMesh
-(c4fpost.hertz.patch_geometry). r = sqrt(x^2 + z^2) is the distance from
+(c4fpost.foamio.patch_geometry). r = sqrt(x^2 + z^2) is the distance from
 the axis through the first point of contact.
 
 Materials: constant/mechanicalProperties, one law (E, nu) for both bodies:
@@ -56,16 +56,9 @@ import math
 import os
 import sys
 
-# In the repository the package is three levels up; a copied case finds it
-# through $C4F_ROOT, which etc/bashrc exports
-for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
-           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
-    if os.path.isdir(os.path.join(_p, "c4fpost")):
-        sys.path.insert(0, _p)
-        break
-from c4fpost import foamio, hertz, report, contactreport  # noqa: E402
+from c4fpost import contactreport, foamio, hertz, report
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 R = 1.0                   # sphere radius [m], system/blockMeshDict
 SLAVE = "sphereContact"
@@ -78,7 +71,7 @@ RMS_SPAN = 0.8
 
 def contact_modulus(case):
     """E* of the two bodies (one law) and a one-line description."""
-    mats = hertz.materials(case)
+    mats = foamio.materials(case)
     if None not in mats:
         sys.exit("compareSphere: expected one material law for both bodies in "
                  "constant/mechanicalProperties")
@@ -91,7 +84,7 @@ def compare(case, time=None):
     time = time or foamio.latest_time(case)
     Es, materials = contact_modulus(case)
 
-    Cf, Sf = hertz.patch_geometry(case, SLAVE)
+    Cf, Sf = foamio.patch_geometry(case, SLAVE)
     n = Cf.shape[0]
     area = np.linalg.norm(Sf, axis=1)
     ny = np.abs(Sf[:, 1]) / area
@@ -130,7 +123,7 @@ def compare(case, time=None):
         extra["report"] = rep
     method = None
     try:
-        method = hertz.read_entry(os.path.join(case, "0", "D"), "method")
+        method = foamio.read_entry(os.path.join(case, "0", "D"), "method")
     except (KeyError, OSError):
         pass
 

@@ -20,18 +20,10 @@ Tolerance on max |sigma_xx - Kirsch| / (3T) along the line:
 """
 import json
 import os
-import sys
 
-# In the repository the package is three levels up; a copied case finds it
-# through $C4F_ROOT, which etc/bashrc exports
-for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
-           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
-    if os.path.isdir(os.path.join(_p, "c4fpost")):
-        sys.path.insert(0, _p)
-        break
-from c4fpost import foamio, kirsch, report  # noqa: E402
+from c4fpost import foamio, kirsch, report
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 T = 1e6     # applied traction [Pa], 0/D
 R = 0.1     # hole radius [m], system/blockMeshDict

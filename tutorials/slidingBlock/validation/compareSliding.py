@@ -39,16 +39,9 @@ limit, 1 beyond it).
 import os
 import sys
 
-# In the repository the package is three levels up; a copied case finds it
-# through $C4F_ROOT, which etc/bashrc exports
-for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../src/postProcessing/python"),
-           os.path.join(os.environ.get("C4F_ROOT", ""), "src/postProcessing/python")):
-    if os.path.isdir(os.path.join(_p, "c4fpost")):
-        sys.path.insert(0, _p)
-        break
-from c4fpost import contactreport, foamio, hertz, report  # noqa: E402
+from c4fpost import contactreport, foamio, report
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 NAME = "slidingBlock"
 SLAVE = "upperBottom"
@@ -86,14 +79,14 @@ def step_forces(case, time, area):
 
 def compare(case):
     d0 = os.path.join(case, "0", "D")
-    mu = float(hertz.read_coeff(d0, "coulombCoeffs", "mu"))
+    mu = float(foamio.read_coeff(d0, "coulombCoeffs", "mu"))
     method = friction = None
     try:
-        method = hertz.read_entry(d0, "method")
-        friction = hertz.read_entry(d0, "friction")
+        method = foamio.read_entry(d0, "method")
+        friction = foamio.read_entry(d0, "friction")
     except KeyError:
         pass
-    _, Sf = hertz.patch_geometry(case, SLAVE)
+    _, Sf = foamio.patch_geometry(case, SLAVE)
     area = np.linalg.norm(Sf, axis=1)
 
     steps = []

@@ -35,16 +35,13 @@ from the stick-zone edge outwards.
     >>> round(stick_ratio(0.0), 4), round(stick_ratio(1.0), 4)
     (1.0, 0.0)
 
-`python3 cattaneo.py` runs these and the self-checks.
+`python3 -m c4fpost.cattaneo` runs these and the self-checks.
 """
 import math
 
 import numpy as np
 
-try:
-    from c4fpost import hertz
-except ImportError:  # run as a script from its own directory
-    import hertz
+from c4fpost import hertz
 
 
 def stick_ratio(load_ratio):

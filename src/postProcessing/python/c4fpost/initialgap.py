@@ -10,7 +10,7 @@ conditions stay what they were, the total displacement from the meshed
 the touching case's, except for what the contact law itself leaves (the
 barrier's gap); the lift only makes the first configuration open.
 
-    python3 initialgap.py <case> <zone> <lx> <ly> <lz> <patch> [<patch> ...]
+    python3 -m c4fpost.initialgap <case> <zone> <lx> <ly> <lz> <patch> [<patch> ...]
 
 sets 0/D's internalField to the lift in the cells of <zone> (0 elsewhere)
 and the value of each listed patch to the lift on its faces whose cell is
@@ -19,9 +19,8 @@ fixed-gradient patch (solidTraction) that reads its face values from
 `value`. The other patches (fixed values, symmetry planes) evaluate theirs.
 
 A zero lift writes `uniform (0 0 0)` instead (the internalField and the
-listed patches' values; no mesh needed): the tutorials' Allrun and Allclean
-call it so, so that a run without -gap does not start from the lift an
-earlier run wrote into 0/D.
+listed patches' values; no mesh needed). The tutorials' Allrun lifts a
+copy of 0/D (bin/tools/c4fRunFunctions keeps the original for Allclean).
 """
 import os
 import re
@@ -29,14 +28,12 @@ import sys
 
 import numpy as np
 
-if __package__ in (None, ""):
-    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from c4fpost import foamio  # noqa: E402
+from c4fpost import foamio
 
 
 def zone_cells(case, zone):
     """The cell labels of a cellZone (constant/polyMesh/cellZones)."""
-    text = foamio._strip_comments(open(os.path.join(case, "constant/polyMesh/cellZones")).read())
+    text = foamio.strip_comments(open(os.path.join(case, "constant/polyMesh/cellZones")).read())
     m = re.search(r"\b%s\s*\{" % re.escape(zone), text)
     if not m:
         raise KeyError("no cellZone %s in %s/constant/polyMesh/cellZones" % (zone, case))

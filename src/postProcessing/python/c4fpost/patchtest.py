@@ -35,7 +35,7 @@ import re
 
 import numpy as np
 
-from c4fpost import contactreport, foamio, hertz
+from c4fpost import contactreport, foamio
 
 # symmTensor order in OpenFOAM files: xx xy xz yy yz zz
 _SYMM = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
@@ -81,8 +81,8 @@ def method_check(method):
 
 def method_coeff(case, method, entry):
     """A scalar entry of <method>Coeffs in 0/D."""
-    text = hertz._strip(open(os.path.join(case, "0", "D")).read())
-    return float(hertz._entry(hertz._sub_dict(text, method + "Coeffs"), entry))
+    text = foamio.strip(open(os.path.join(case, "0", "D")).read())
+    return float(foamio.entry(foamio.sub_dict(text, method + "Coeffs"), entry))
 
 
 def constitutive_stress(modulus, delta, length, cN, n):
@@ -176,7 +176,7 @@ class PatchTest:
     def slave_geometry(self, case, V):
         """Face centres Cf and areas |Sf| of the slave patch, its face cells
         and h = V/A of those cells."""
-        Cf, Sf = hertz.patch_geometry(case, self.slave)
+        Cf, Sf = foamio.patch_geometry(case, self.slave)
         area = np.linalg.norm(Sf, axis=1)
         cells = foamio.patch_face_cells(case, self.slave)
         return Cf, area, cells, V[cells] / area
@@ -204,9 +204,9 @@ class PatchTest:
             return [dict(name="%s/%s_max_rel_error" % (self.name, comp), value=maxRel,
                          reference=0.0, error=maxRel, tolerance=self.exact_tol,
                          units=units)], predicted, self.exact_tol
-        s = (hertz.read_coeff(os.path.join(case, "0", "D"), method + "Coeffs", scale,
+        s = (foamio.read_coeff(os.path.join(case, "0", "D"), method + "Coeffs", scale,
                               default_scale) if method
-             else hertz.read_coeff(os.path.join(case, "0", "D"), coeffs, "penaltyScale",
+             else foamio.read_coeff(os.path.join(case, "0", "D"), coeffs, "penaltyScale",
                                    default_scale))
         eps = s * K / h
         if np.ptp(eps) > 1e-12 * eps.max():
@@ -343,7 +343,7 @@ class PatchTest:
     def master_pressure(self, case, time, res, R=None):
         """Adds the master patch's face centres' x (x' = R^T x with R) and
         contactPressure to res as masterX and masterP."""
-        Cf, _ = hertz.patch_geometry(case, self.master)
+        Cf, _ = foamio.patch_geometry(case, self.master)
         p = foamio.read_patch(os.path.join(case, time, "contactPressure"), self.master, len(Cf))
         res.update(masterX=(Cf if R is None else Cf @ R)[:, 0].tolist(), masterP=p.tolist())
 
