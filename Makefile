@@ -1,5 +1,6 @@
 # contact4foam: the README's commands.
 #   make run    install what is missing, build, run the default tutorial
+#               (in a copy under $FOAM_RUN; it prints where)
 #   make test   install what is missing, build, run all tests
 #   make bench  run the benchmarks
 #   make clean  remove all build output (distclean: also the OpenFOAM kit)
@@ -22,8 +23,14 @@ bootstrap:
 build: bootstrap
 	@$(ENV) && ./Allwmake
 
+# The default tutorial in a fresh copy under the run directory ($FOAM_RUN,
+# $(PREFIX)/run), as OpenFOAM's habit is: the source tree stays clean
 run: build
-	@$(ENV) && $(DEFAULT_TUTORIAL)/Allclean >/dev/null && $(DEFAULT_TUTORIAL)/Allrun
+	@$(ENV) && case="$$FOAM_RUN/$(notdir $(DEFAULT_TUTORIAL))" \
+	    && rm -rf "$$case" && mkdir -p "$$FOAM_RUN" \
+	    && cp -r $(DEFAULT_TUTORIAL) "$$case" && "$$case/Allclean" >/dev/null \
+	    && "$$case/Allrun" \
+	    && echo "results: $$case (VTK/ for ParaView, log.* and postProcessing/contactReport)"
 
 test: build
 	@$(ENV) && $(PY) tests/run.py
@@ -38,4 +45,5 @@ distclean: clean
 	rm -rf "$(PREFIX)"
 
 shellcheck:
-	shellcheck -x bin/bootstrap Allwmake Allclean .ci/run tutorials/*/Allrun tutorials/*/Allclean
+	shellcheck -x bin/bootstrap Allwmake Allclean .ci/run bin/tools/c4fRunFunctions \
+	    tutorials/*/Allrun tutorials/*/Allclean
