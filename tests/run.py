@@ -124,7 +124,7 @@ def list_methods():
     rc, out = run(["solidContactFoam", "-listMethods"], cwd=ROOT)
     if rc:
         raise RuntimeError("solidContactFoam -listMethods failed:\n" + out)
-    return [m for m in out.split() if m]
+    return [line.split()[0] for line in out.splitlines() if line.split()]
 
 
 def checked_methods(res, tutorial, methods):
@@ -139,11 +139,16 @@ def checked_methods(res, tutorial, methods):
     return [m for m in methods if m in known]
 
 
-def set_coeff(case, entry, value):
-    """Set `entry value;` (first occurrence, anchored at a line) in 0/D."""
+def set_coeff(case, entry, value, coeffs=None):
+    """Set `entry value;` (first occurrence, anchored at a line) in 0/D; where
+    there is none (the class default holds), add `coeffs { entry value; }`
+    after the slave's `method` line."""
     d = os.path.join(case, "0/D")
     text, n = re.subn(r"^(\s*%s\s+)[^;\s]+;" % re.escape(entry), r"\g<1>%s;" % value,
                       open(d).read(), count=1, flags=re.M)
+    if n != 1 and coeffs:
+        text, n = re.subn(r"^(\s*)(method\s+\w+;)", r"\g<1>\g<2>\n\g<1>%s { %s %s; }"
+                          % (coeffs, entry, value), text, count=1, flags=re.M)
     if n != 1:
         raise RuntimeError("no entry %s in %s" % (entry, d))
     open(d, "w").write(text)
@@ -656,7 +661,7 @@ def main():
             print("== contactPatchTest: barrier, kappaScale 0.01 (kappa doubled)", flush=True)
             soft = tutorial_case(res, "contactPatchTest", "contactPatchTest_barrier_kappaUpdate",
                                  ["-method", "barrier"], controls="verbose yes;",
-                                 edit=lambda case: set_coeff(case, "kappaScale", "0.01"))
+                                 edit=lambda case: set_coeff(case, "kappaScale", "0.01", "barrierCoeffs"))
             barrier_gaps_open(res, soft, "contactPatchTest_barrier_kappaUpdate")
             row = contactreport.last_row(soft, "lowerTop") or {}
             res.add("contactPatchTest_barrier_kappaUpdate/kappa_doubled",
@@ -707,7 +712,7 @@ def main():
                 print("== contactPatchTest: nitsche, gamma0 = %s" % gamma0, flush=True)
                 tutorial_case(res, "contactPatchTest", "contactPatchTest_nitsche_gamma0_" + gamma0,
                               ["-method", "nitsche"],
-                              edit=lambda case, g=gamma0: set_coeff(case, "gamma0", g))
+                              edit=lambda case, g=gamma0: set_coeff(case, "gamma0", g, "nitscheCoeffs"))
         print("== contactPatchTest: onNonConvergence continue", flush=True)
         accept_unconverged(res)
 
@@ -911,7 +916,7 @@ def main():
             tutorial_case(res, "hertzCylinder", "hertzCylinder_nearRigid_blockSlave_nitsche",
                           ["-method", "nitsche", "-materials", "nearRigidCylinder",
                            "-slave", "block"],
-                          edit=lambda case: set_coeff(case, "weights", "stiffness"))
+                          edit=lambda case: set_coeff(case, "weights", "stiffness", "nitscheCoeffs"))
         # The 1000:1 patch test with the soft block as the slave, and with
         # the stiff one (7 coarse slave faces on 10 master faces): both
         # converge to the same answer (the Lagrange multiplier's active-set
