@@ -26,7 +26,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "src/postProcessing/python"))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 
-from c4fpost import contactfree, contactreport, foamio, patchtest  # noqa: E402
+from c4fpost import contactfree, contactreport, foamio, methods, patchtest  # noqa: E402
 from regression import badInput  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -77,7 +77,7 @@ CHECKED_METHODS = {
     "hertzCylinder": ("lagrangeMultiplier", "penalty", "augmentedLagrange",
                       "crossConstraint", "constitutiveLaw", "perturbedLagrange",
                       "directElimination", "nitsche", "barrier"),
-    "contactPatchTest3D": tuple(patchtest.METHOD_CHECKS),
+    "contactPatchTest3D": tuple(methods.names()),
 }
 WORK = os.path.join(PREFIX, "run", "tests")
 
@@ -121,10 +121,7 @@ def run(cmd, cwd, env=None, log=None):
 
 def list_methods():
     """The contact methods of the solver's run-time selection table."""
-    rc, out = run(["solidContactFoam", "-listMethods"], cwd=ROOT)
-    if rc:
-        raise RuntimeError("solidContactFoam -listMethods failed:\n" + out)
-    return [line.split()[0] for line in out.splitlines() if line.split()]
+    return methods.names()
 
 
 def checked_methods(res, tutorial, methods):
@@ -1012,7 +1009,7 @@ def main():
 FRICTION_CATTANEO_METHODS = ("lagrangeMultiplier", "augmentedLagrange", "penalty")
 # Methods that allow stick but not slip: coulomb with them is a FatalIOError
 # (Wriggers' remark 2.7.3 on the perturbed Lagrange functional)
-FRICTION_NO_SLIP = ("perturbedLagrange",)
+FRICTION_NO_SLIP = tuple(m for m in methods.names() if not methods.get(m).slip)
 FRICTION_MODELS = ("frictionless", "stick", "coulomb")
 
 

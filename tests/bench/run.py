@@ -623,7 +623,8 @@ def methods_bench():
     import comparePatchTest
     sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzSphere/validation"))
     import compareSphere
-    methods = [m for m in sh("%s -listMethods" % SOLVER, ROOT).split() if m]
+    methods = [line.split()[0] for line in sh("%s -listMethods" % SOLVER, ROOT).splitlines()
+               if line.strip()]
     print("\n== every method side by side: %s" % ", ".join(methods), flush=True)
     rows = []
     for m in methods:
@@ -801,7 +802,8 @@ def friction_bench():
     sys.path.insert(0, os.path.join(ROOT, "tutorials/slidingBlock/validation"))
     import compareSliding
     import compareStick
-    methods = [m for m in sh("%s -listMethods" % SOLVER, ROOT).split() if m]
+    methods = [line.split()[0] for line in sh("%s -listMethods" % SOLVER, ROOT).splitlines()
+               if line.strip()]
     print("\n== friction: cattaneoMindlin (%s) at -refine %s, slidingBlock and the stick patch"
           " test for %s" % (", ".join(FRICTION_CATTANEO_METHODS),
                             " and ".join("%d" % n for n in CATTANEO_LEVELS), ", ".join(methods)),

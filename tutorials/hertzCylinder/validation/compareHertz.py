@@ -69,7 +69,7 @@ import json
 import os
 import sys
 
-from c4fpost import contactreport, foamio, hertz, patchtest, report
+from c4fpost import contactreport, foamio, hertz, methods, patchtest, report
 
 import numpy as np
 
@@ -101,11 +101,11 @@ def contact_modulus(case, estar):
     return both, what
 
 
-def interface_law(case, time):
-    """c_N and n of constitutiveLawCoeffs in the D written at `time` (the
+def interface_law(case, time, method):
+    """c_N and n of <method>Coeffs in the D written at `time` (the
     slave's entry: the coefficients the run used, macros expanded)."""
     text = foamio.strip(open(os.path.join(case, time, "D")).read())
-    coeffs = foamio.sub_dict(text, "constitutiveLawCoeffs")
+    coeffs = foamio.sub_dict(text, method + "Coeffs")
     return dict(cN=float(foamio.entry(coeffs, "cN")), n=float(foamio.entry(coeffs, "n")))
 
 
@@ -189,8 +189,8 @@ def compare(case, estar="both", time=None):
 
     # The reference: Hertz, or Hertz with the constitutive interface law
     law, aRef, what = None, float(aH), "Hertz"
-    if method == "constitutiveLaw":
-        law = interface_law(case, time)
+    if method is not None and methods.get(method).answer == "constitutive":
+        law = interface_law(case, time, method)
         law.update(hertz.interface_law_contact(P, R, Es, law["cN"], law["n"]))
         p0Ref = float(np.interp(x[iMax], law["x"], law["p"]))
         aRef = law["a"]

@@ -75,7 +75,7 @@ import os
 import sys
 
 import compareHertz
-from c4fpost import contactreport, elastic, foamio, hertz, patchtest, report
+from c4fpost import contactreport, elastic, foamio, hertz, methods, patchtest, report
 
 import numpy as np
 
@@ -98,11 +98,9 @@ def check(name, value, reference, error, tolerance, units="", passed=None):
 def eps_of_faces(case, slave, method):
     """eps = penaltyScale K/h of every slave face (uzawaMethod's), or None
     for a method without it."""
-    if method not in ("augmentedLagrange", "crossConstraint"):
+    if methods.get(method).multipliers != "augmented":
         return None
-    text = open(os.path.join(case, "0", "D")).read()
-    body = foamio.sub_dict(foamio.strip(text), method + "Coeffs")
-    s = float(foamio.entry(body, "penaltyScale", 1.0))
+    s = methods.coeff(case, method, "penaltyScale")
     mats = foamio.materials(case)
     E, nu, ps = mats[None] if None in mats else mats[slave.replace("Contact", "")]
     K = elastic.impK(E, nu, ps)
