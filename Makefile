@@ -1,6 +1,7 @@
 # contact4foam: the README's commands.
 #   make run    install what is missing, build, run the default tutorial
-#   make test   install what is missing, build, run all tests
+#   make test   install what is missing, build, run all tests (pytest on
+#               every core; a subset: make test PYTEST_ARGS="-k penalty")
 #   make bench  run the benchmarks
 #   make clean  remove all build output (distclean: also the OpenFOAM kit)
 
@@ -10,6 +11,9 @@ ENV    := source etc/bashrc
 # The clone this make runs in, not the one that last ran bin/bootstrap
 export C4F_ROOT := $(CURDIR)
 PY     := /usr/bin/python3
+# pytest: a worker per core, the tests that share a run kept on one worker
+PYTEST := $(PY) -m pytest tests -n auto --dist loadgroup
+PYTEST_ARGS ?=
 DEFAULT_TUTORIAL := tutorials/hertzCylinder
 
 .PHONY: all bootstrap build run test bench clean distclean shellcheck
@@ -26,7 +30,7 @@ run: build
 	@$(ENV) && $(DEFAULT_TUTORIAL)/Allclean >/dev/null && $(DEFAULT_TUTORIAL)/Allrun
 
 test: build
-	@$(ENV) && $(PY) tests/run.py
+	@$(ENV) && $(PYTEST) $(PYTEST_ARGS)
 
 bench: build
 	@$(ENV) && $(PY) tests/bench/run.py && $(PY) tests/bench/searchBench.py
