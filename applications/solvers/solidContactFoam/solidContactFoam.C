@@ -89,8 +89,15 @@ Usage
     \endtable
 
     `solidContactFoam -listMethods` prints the contact methods of the
-    run-time selection table, one per line; `-listFrictionModels` the
-    friction models.
+    run-time selection table, one per line, each with its traits
+    (contactMethodTraits), the one list of method facts the tutorials,
+    tests and benchmarks read:
+
+        <name> answer=<exact|penalty|constitutive|barrier> openStart=<yes|no>
+            slip=<yes|no> multipliers=<none|augmented|regularised>
+            coeffs=<entry:default,...|->
+
+    `-listFrictionModels` prints the friction models, one per line.
 
     \verbatim
     solidMechanics
@@ -128,7 +135,7 @@ int main(int argc, char *argv[])
     (
         "listMethods",
         "print the contact methods (the values of a solidContact slave's"
-        " `method` entry), one per line, and exit"
+        " `method` entry), one per line with their traits, and exit"
     );
 
     argList::addBoolOption
@@ -146,13 +153,16 @@ int main(int argc, char *argv[])
         const std::string opt(argv[i]);
         if (opt == "-listMethods" || opt == "-listFrictionModels")
         {
-            const wordList names
+            if (opt == "-listMethods")
+            {
+                contactMethod::printTable(std::cout);
+                return 0;
+            }
+            for
             (
-                opt == "-listMethods"
-              ? contactMethod::dictionaryConstructorTablePtr_->sortedToc()
+                const word& m
               : frictionModel::dictionaryConstructorTablePtr_->sortedToc()
-            );
-            for (const word& m : names)
+            )
             {
                 std::cout << m << '\n';
             }

@@ -76,7 +76,7 @@ for _p in (os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../sr
     if os.path.isdir(os.path.join(_p, "c4fpost")):
         sys.path.insert(0, _p)
         break
-from c4fpost import foamio, hertz, patchtest, report, contactreport  # noqa: E402
+from c4fpost import foamio, hertz, methods, patchtest, report, contactreport  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -108,11 +108,11 @@ def contact_modulus(case, estar):
     return both, what
 
 
-def interface_law(case, time):
-    """c_N and n of constitutiveLawCoeffs in the D written at `time` (the
+def interface_law(case, time, method):
+    """c_N and n of <method>Coeffs in the D written at `time` (the
     slave's entry: the coefficients the run used, macros expanded)."""
     text = hertz._strip(open(os.path.join(case, time, "D")).read())
-    coeffs = hertz._sub_dict(text, "constitutiveLawCoeffs")
+    coeffs = hertz._sub_dict(text, method + "Coeffs")
     return dict(cN=float(hertz._entry(coeffs, "cN")), n=float(hertz._entry(coeffs, "n")))
 
 
@@ -196,8 +196,8 @@ def compare(case, estar="both", time=None):
 
     # The reference: Hertz, or Hertz with the constitutive interface law
     law, aRef, what = None, float(aH), "Hertz"
-    if method == "constitutiveLaw":
-        law = interface_law(case, time)
+    if method is not None and methods.get(method).answer == "constitutive":
+        law = interface_law(case, time, method)
         law.update(hertz.interface_law_contact(P, R, Es, law["cN"], law["n"]))
         p0Ref = float(np.interp(x[iMax], law["x"], law["p"]))
         aRef = law["a"]

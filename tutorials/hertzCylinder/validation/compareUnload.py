@@ -82,7 +82,7 @@ for _p in (os.path.join(_HERE, "../../../src/postProcessing/python"),
         sys.path.insert(0, _p)
         break
 import compareHertz  # noqa: E402
-from c4fpost import foamio, hertz, patchtest, report, contactreport  # noqa: E402
+from c4fpost import foamio, hertz, methods, patchtest, report, contactreport  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -105,11 +105,9 @@ def check(name, value, reference, error, tolerance, units="", passed=None):
 def eps_of_faces(case, slave, method):
     """eps = penaltyScale K/h of every slave face (uzawaMethod's), or None
     for a method without it."""
-    if method not in ("augmentedLagrange", "crossConstraint"):
+    if methods.get(method).multipliers != "augmented":
         return None
-    text = open(os.path.join(case, "0", "D")).read()
-    body = hertz._sub_dict(hertz._strip(text), method + "Coeffs")
-    s = float(hertz._entry(body, "penaltyScale", 1.0))
+    s = methods.coeff(case, method, "penaltyScale")
     mats = hertz.materials(case)
     E, nu, ps = mats[None] if None in mats else mats[slave.replace("Contact", "")]
     K = hertz.impK(E, nu, ps)

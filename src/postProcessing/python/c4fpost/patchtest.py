@@ -23,11 +23,9 @@ with where the tolerances come from; this module reads the fields, builds
 the checks from those numbers, and prints and plots what the two have in
 common. A check is a dict as c4fpost.report describes.
 
-METHOD_CHECKS says which of these answers each contact method gives, so
-that a patch test knows how to check it: a method of solidContactFoam
--listMethods with no entry here has no check (contactPatchTest3D fails it,
-and tests/run.py takes its list of 3D methods from here). Adding a method
-is one entry.
+Which of these answers a contact method gives is one of its traits
+(`answer` of solidContactFoam -listMethods, c4fpost.methods): a new method
+is checked by the answer it declares, with no list here.
 """
 import math
 import os
@@ -35,54 +33,25 @@ import re
 
 import numpy as np
 
-from c4fpost import contactreport, foamio, hertz
+from c4fpost import contactreport, foamio, hertz, methods
 
 # symmTensor order in OpenFOAM files: xx xy xz yy yz zz
 _SYMM = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
 
-# The patch-test answer of each contact method:
-#   exact         the gap closes: the exact uniform stress (to the scripts'
-#                 EXACT_TOL, 1e-6); the multiplier methods reach it through
-#                 their Uzawa updates (multiplierTolerance 1e-6)
-#   penalty       the series-spring offset with eps = scale K/h, the scale
-#                 the entry `scale` of the method's <method>Coeffs
-#   constitutive  the series solution with the law p = cN (-g)^n (cN, n of
-#                 the method's <method>Coeffs) and its uniform penetration
-#   barrier       the series solution with the barrier law (dhat of the
-#                 method's <method>Coeffs, kappa its written field
-#                 barrierStiffness) and its uniform open gap d; the
-#                 bodies need an open start (the patch tests' Allrun -gap,
-#                 default on for -method barrier)
-# (a perturbed Lagrange multiplier, lambda = eps g, would be
-# dict(kind="penalty", scale=<its scale entry>): for the same eps it is
-# the penalty's state)
-METHOD_CHECKS = {
-    "lagrangeMultiplier": dict(kind="exact"),
-    "augmentedLagrange": dict(kind="exact"),
-    "crossConstraint": dict(kind="exact"),
-    "directElimination": dict(kind="exact"),
-    # consistent: exact for every gamma0 (the cells' stress is the face's)
-    "nitsche": dict(kind="exact"),
-    "penalty": dict(kind="penalty", scale="penaltyScale"),
-    "constitutiveLaw": dict(kind="constitutive"),
-    "perturbedLagrange": dict(kind="penalty", scale="penaltyScale"),
-    "barrier": dict(kind="barrier"),
-}
-
-# The barrier's default dhat, a fraction of the largest slave cell size h
-# (barrierContactMethod.C)
-BARRIER_DEFAULT_DHAT_SCALE = 1e-3
-
-
 def method_check(method):
-    """METHOD_CHECKS' entry of a method, None where it has none."""
-    return METHOD_CHECKS.get(method)
+    """How a patch test checks `method`, from its traits' answer:
+    dict(kind=...) with kind exact, penalty (then scale, the entry of the
+    penalty scale: eps = scale K/h), constitutive or barrier."""
+    answer = methods.get(method).answer
+    if answer == "penalty":
+        return dict(kind="penalty", scale="penaltyScale")
+    return dict(kind=answer)
 
 
 def method_coeff(case, method, entry):
-    """A scalar entry of <method>Coeffs in 0/D."""
-    text = hertz._strip(open(os.path.join(case, "0", "D")).read())
-    return float(hertz._entry(hertz._sub_dict(text, method + "Coeffs"), entry))
+    """A scalar coefficient of `method` in `case`: its <method>Coeffs entry
+    of 0/D, else the class's default (c4fpost.methods.coeff)."""
+    return methods.coeff(case, method, entry)
 
 
 def constitutive_stress(modulus, delta, length, cN, n):
@@ -182,14 +151,13 @@ class PatchTest:
         return Cf, area, cells, V[cells] / area
 
     def stress_checks(self, case, res, comp, penalty, modulus, K, h, method=None,
-                      scale="penaltyScale", coeffs="penaltyCoeffs", default_scale=10.0,
-                      stress=None):
+                      scale="penaltyScale", stress=None):
         """The checks on the normal stress `comp` (syy, szz) of a column of
         the given modulus, from res's exact, maxRel and spread: with
         `penalty`, the offset that eps_N predicts (the entry `scale` of
-        <method>Coeffs in 0/D with a method, otherwise penaltyScale of the
-        dictionary `coeffs`; default_scale where it is not given; the mean
-        over the slave cells' h) and the uniformity; otherwise the exact
+        the method's coefficients, c4fpost.methods.coeff: 0/D's or the
+        class's default; the mean over the slave cells' h) and the
+        uniformity; otherwise the exact
         state. With `stress` (every cell's `comp`, for a method whose answer
         is the penalty's, perturbedLagrange) the penalty state is checked as
         an exact one: max |stress - sigma_pen|/|sigma_pen| and the
@@ -204,10 +172,7 @@ class PatchTest:
             return [dict(name="%s/%s_max_rel_error" % (self.name, comp), value=maxRel,
                          reference=0.0, error=maxRel, tolerance=self.exact_tol,
                          units=units)], predicted, self.exact_tol
-        s = (hertz.read_coeff(os.path.join(case, "0", "D"), method + "Coeffs", scale,
-                              default_scale) if method
-             else hertz.read_coeff(os.path.join(case, "0", "D"), coeffs, "penaltyScale",
-                                   default_scale))
+        s = methods.coeff(case, method, scale)
         eps = s * K / h
         if np.ptp(eps) > 1e-12 * eps.max():
             print("NOTE: the slave cells' h = V/A varies (%g .. %g); using the mean"
@@ -271,7 +236,7 @@ class PatchTest:
     def barrier_checks(self, case, time, res, comp, stress, modulus, nfaces, h,
                        method="barrier"):
         """The checks of a column with the barrier in series: dhat of
-        <method>Coeffs in 0/D (or BARRIER_DEFAULT_DHAT_SCALE times the
+        <method>Coeffs in 0/D (or dhatScale (its default from the solver) times the
         largest slave h), kappa the field barrierStiffness written on the
         slave (uniform: the kappa the step converged with, doublings
         included); the normal stress `comp` (the cells' `stress`) equals
@@ -285,7 +250,7 @@ class PatchTest:
         try:
             dhat = method_coeff(case, method, "dhat")
         except (KeyError, AttributeError, TypeError, ValueError):
-            dhat = BARRIER_DEFAULT_DHAT_SCALE * float(np.max(h))
+            dhat = method_coeff(case, method, "dhatScale") * float(np.max(h))
         kappa = np.asarray(foamio.read_patch(os.path.join(case, time, "barrierStiffness"),
                                              self.slave, nfaces))
         # kappa = s K/h: uniform up to the round-off of h = V/A, about 1e-11

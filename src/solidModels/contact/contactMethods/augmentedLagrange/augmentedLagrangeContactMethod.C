@@ -11,9 +11,21 @@ namespace Foam
 namespace contactMethods
 {
     defineTypeNameAndDebug(augmentedLagrange, 0);
-    addToRunTimeSelectionTable(contactMethod, augmentedLagrange, dictionary);
+    addContactMethodToTables(augmentedLagrange);
 }
 }
+
+
+// exact once the Uzawa updates have converged
+const Foam::contactMethodTraits
+Foam::contactMethods::augmentedLagrange::typeTraits
+{
+    contactMethodTraits::answerKind::exact,
+    false,  // openStart
+    true,  // allowsSlip
+    contactMethodTraits::multiplierKind::augmented,
+    "penaltyScale 1; penetrationTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100;"
+};
 
 
 Foam::contactMethods::augmentedLagrange::augmentedLagrange

@@ -13,18 +13,21 @@ namespace Foam
 namespace contactMethods
 {
     defineTypeNameAndDebug(barrier, 0);
-    addToRunTimeSelectionTable(contactMethod, barrier, dictionary);
+    addContactMethodToTables(barrier);
 }
 }
 
 
-namespace
+// infinite at a closed gap: the bodies start apart, the gap stays open
+const Foam::contactMethodTraits
+Foam::contactMethods::barrier::typeTraits
 {
-
-//- The default dhat as a fraction of the largest slave cell size h
-const Foam::scalar defaultDhatScale = 1e-3;
-
-} // End anonymous namespace
+    contactMethodTraits::answerKind::barrier,
+    true,  // openStart
+    true,  // allowsSlip
+    contactMethodTraits::multiplierKind::none,
+    "dhatScale 1e-3; kappaScale 1; stepFraction 0.2; gapFloor 0.01; maxKappaFactor 100;"
+};
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -56,10 +59,11 @@ Foam::contactMethods::barrier::barrier
 :
     contactMethod(patch, coeffs),
     dhat_(coeffs.getOrDefault<scalar>("dhat", -1)),
-    kappaScale_(coeffs.getOrDefault<scalar>("kappaScale", 1)),
-    stepFraction_(coeffs.getOrDefault<scalar>("stepFraction", 0.2)),
-    gapFloor_(coeffs.getOrDefault<scalar>("gapFloor", 0.01)),
-    maxKappaFactor_(coeffs.getOrDefault<scalar>("maxKappaFactor", 100)),
+    dhatScale_(coeffs.get<scalar>("dhatScale")),
+    kappaScale_(coeffs.get<scalar>("kappaScale")),
+    stepFraction_(coeffs.get<scalar>("stepFraction")),
+    gapFloor_(coeffs.get<scalar>("gapFloor")),
+    maxKappaFactor_(coeffs.get<scalar>("maxKappaFactor")),
     started_(false),
     newStep_(true),
     previousMinGap_(GREAT),
@@ -84,7 +88,17 @@ Foam::contactMethods::barrier::barrier
         (
             "dhat", dhat_,
             c4f::contact::describeBarrierLengthRequirement()
-          + "; leave it out for 1e-3 of the largest slave cell size"
+          + "; leave it out for dhatScale (default 1e-3) of the largest"
+            " slave cell size"
+        );
+    }
+    if (!c4f::contact::validBarrierFraction(dhatScale_))
+    {
+        invalid
+        (
+            "dhatScale", dhatScale_,
+            c4f::contact::describeBarrierFractionRequirement()
+          + " (dhat as a fraction of the largest slave cell size)"
         );
     }
     if (!c4f::contact::validBarrierScale(kappaScale_))
@@ -151,7 +165,7 @@ void Foam::contactMethods::barrier::correct
         // Taken here, with every processor's faces, so that a decomposed
         // run takes the serial run's value
         dhat_ =
-            defaultDhatScale
+            dhatScale_
            *returnReduce(state.h.size() ? max(state.h) : 0, maxOp<scalar>());
     }
 

@@ -12,9 +12,21 @@ namespace Foam
 namespace contactMethods
 {
     defineTypeNameAndDebug(constitutiveLaw, 0);
-    addToRunTimeSelectionTable(contactMethod, constitutiveLaw, dictionary);
+    addContactMethodToTables(constitutiveLaw);
 }
 }
+
+
+// the law p = cN (-g)^n in series; cN and n have no default
+const Foam::contactMethodTraits
+Foam::contactMethods::constitutiveLaw::typeTraits
+{
+    contactMethodTraits::answerKind::constitutive,
+    false,  // openStart
+    true,  // allowsSlip
+    contactMethodTraits::multiplierKind::none,
+    ""
+};
 
 
 namespace

@@ -23,6 +23,39 @@ Foam::contactMethod::contactMethod
 {}
 
 
+Foam::contactMethod::traitsTable& Foam::contactMethod::traitsTableRef()
+{
+    static traitsTable table;
+    return table;
+}
+
+
+const Foam::contactMethodTraits& Foam::contactMethod::traits
+(
+    const word& name
+)
+{
+    const auto iter = traitsTableRef().cfind(name);
+    if (!iter.found())
+    {
+        FatalErrorInFunction
+            << "Contact method " << name << " has no traits: its .C must"
+            << " register it with addContactMethodToTables(" << name << ")"
+            << abort(FatalError);
+    }
+    return **iter;
+}
+
+
+void Foam::contactMethod::printTable(std::ostream& os)
+{
+    for (const word& name : dictionaryConstructorTablePtr_->sortedToc())
+    {
+        os  << name << ' ' << traits(name).describe().c_str() << '\n';
+    }
+}
+
+
 void Foam::contactMethod::write(Ostream& os) const
 {
     coeffs_.writeEntry(word(methodName() + "Coeffs"), os);

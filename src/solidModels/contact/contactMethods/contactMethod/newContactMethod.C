@@ -37,7 +37,18 @@ Foam::autoPtr<Foam::contactMethod> Foam::contactMethod::New
     const word coeffsName(methodType + "Coeffs");
     // An absent <method>Coeffs is an empty one, named where it would be,
     // so that errors about its entries point at the right place
-    const dictionary coeffs(patchDict.subOrEmptyDict(coeffsName));
+    dictionary coeffs(patchDict.subOrEmptyDict(coeffsName));
+
+    // The class's defaults under the user's entries: a method reads every
+    // optional coefficient with get<>(), its default declared once, in its
+    // traits
+    for (const entry& e : traits(methodType).defaults())
+    {
+        if (!coeffs.found(e.keyword(), keyType::LITERAL))
+        {
+            coeffs.add(e.clone(coeffs).ptr());
+        }
+    }
 
     Info<< "Contact patch " << patch.name()
         << ": selecting method " << methodType << endl;

@@ -12,9 +12,21 @@ namespace Foam
 namespace contactMethods
 {
     defineTypeNameAndDebug(crossConstraint, 0);
-    addToRunTimeSelectionTable(contactMethod, crossConstraint, dictionary);
+    addContactMethodToTables(crossConstraint);
 }
 }
+
+
+// exact once the Uzawa updates have converged
+const Foam::contactMethodTraits
+Foam::contactMethods::crossConstraint::typeTraits
+{
+    contactMethodTraits::answerKind::exact,
+    false,  // openStart
+    true,  // allowsSlip
+    contactMethodTraits::multiplierKind::augmented,
+    "penaltyScale 1; penetrationTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100;"
+};
 
 
 Foam::contactMethods::crossConstraint::crossConstraint

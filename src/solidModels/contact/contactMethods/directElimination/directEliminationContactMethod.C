@@ -11,9 +11,21 @@ namespace Foam
 namespace contactMethods
 {
     defineTypeNameAndDebug(directElimination, 0);
-    addToRunTimeSelectionTable(contactMethod, directElimination, dictionary);
+    addContactMethodToTables(directElimination);
 }
 }
+
+
+// exact, no multiplier; no coefficients
+const Foam::contactMethodTraits
+Foam::contactMethods::directElimination::typeTraits
+{
+    contactMethodTraits::answerKind::exact,
+    false,  // openStart
+    true,  // allowsSlip
+    contactMethodTraits::multiplierKind::none,
+    ""
+};
 
 
 Foam::contactMethods::directElimination::directElimination

@@ -11,9 +11,21 @@ namespace Foam
 namespace contactMethods
 {
     defineTypeNameAndDebug(lagrangeMultiplier, 0);
-    addToRunTimeSelectionTable(contactMethod, lagrangeMultiplier, dictionary);
+    addContactMethodToTables(lagrangeMultiplier);
 }
 }
+
+
+// exact: the gap closes; active set from the primal-dual rule
+const Foam::contactMethodTraits
+Foam::contactMethods::lagrangeMultiplier::typeTraits
+{
+    contactMethodTraits::answerKind::exact,
+    false,  // openStart
+    true,  // allowsSlip
+    contactMethodTraits::multiplierKind::none,
+    "activeSetScale 1;"
+};
 
 
 Foam::contactMethods::lagrangeMultiplier::lagrangeMultiplier
@@ -23,7 +35,7 @@ Foam::contactMethods::lagrangeMultiplier::lagrangeMultiplier
 )
 :
     contactMethod(patch, coeffs),
-    activeSetScale_(coeffs.getOrDefault<scalar>("activeSetScale", 1))
+    activeSetScale_(coeffs.get<scalar>("activeSetScale"))
 {
     if (!c4f::contact::validPenalty(activeSetScale_))
     {

@@ -11,9 +11,21 @@ namespace Foam
 namespace contactMethods
 {
     defineTypeNameAndDebug(nitsche, 0);
-    addToRunTimeSelectionTable(contactMethod, nitsche, dictionary);
+    addContactMethodToTables(nitsche);
 }
 }
+
+
+// consistent: exact for every gamma0
+const Foam::contactMethodTraits
+Foam::contactMethods::nitsche::typeTraits
+{
+    contactMethodTraits::answerKind::exact,
+    false,  // openStart
+    true,  // allowsSlip
+    contactMethodTraits::multiplierKind::none,
+    "gamma0 10; weights equal;"
+};
 
 
 Foam::contactMethods::nitsche::nitsche
@@ -23,8 +35,8 @@ Foam::contactMethods::nitsche::nitsche
 )
 :
     contactMethod(patch, coeffs),
-    gamma0_(coeffs.getOrDefault<scalar>("gamma0", 10)),
-    weights_(coeffs.getOrDefault<word>("weights", "equal"))
+    gamma0_(coeffs.get<scalar>("gamma0")),
+    weights_(coeffs.get<word>("weights"))
 {
     if (weights_ != "equal" && weights_ != "stiffness")
     {

@@ -11,9 +11,21 @@ namespace Foam
 namespace contactMethods
 {
     defineTypeNameAndDebug(penalty, 0);
-    addToRunTimeSelectionTable(contactMethod, penalty, dictionary);
+    addContactMethodToTables(penalty);
 }
 }
+
+
+// a spring eps_N = penaltyScale K/h in series: the penalty offset
+const Foam::contactMethodTraits
+Foam::contactMethods::penalty::typeTraits
+{
+    contactMethodTraits::answerKind::penalty,
+    false,  // openStart
+    true,  // allowsSlip
+    contactMethodTraits::multiplierKind::none,
+    "penaltyScale 10; implicit yes; relaxationFactor 0.05;"
+};
 
 
 Foam::contactMethods::penalty::penalty
@@ -23,9 +35,9 @@ Foam::contactMethods::penalty::penalty
 )
 :
     contactMethod(patch, coeffs),
-    scale_(coeffs.getOrDefault<scalar>("penaltyScale", 10)),
-    implicit_(coeffs.getOrDefault<bool>("implicit", true)),
-    omega_(coeffs.getOrDefault<scalar>("relaxationFactor", 0.05))
+    scale_(coeffs.get<scalar>("penaltyScale")),
+    implicit_(coeffs.get<bool>("implicit")),
+    omega_(coeffs.get<scalar>("relaxationFactor"))
 {
     if (!c4f::contact::validPenalty(scale_))
     {

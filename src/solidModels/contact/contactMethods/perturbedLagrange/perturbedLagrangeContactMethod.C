@@ -11,9 +11,22 @@ namespace Foam
 namespace contactMethods
 {
     defineTypeNameAndDebug(perturbedLagrange, 0);
-    addToRunTimeSelectionTable(contactMethod, perturbedLagrange, dictionary);
+    addContactMethodToTables(perturbedLagrange);
 }
 }
+
+
+// lambda = eps g at the fixed point: the penalty's answer; no slip law
+    // for a regularised multiplier (Wriggers 2006, remark 2.7.3)
+const Foam::contactMethodTraits
+Foam::contactMethods::perturbedLagrange::typeTraits
+{
+    contactMethodTraits::answerKind::penalty,
+    false,  // openStart
+    false,  // allowsSlip
+    contactMethodTraits::multiplierKind::regularised,
+    "penaltyScale 10; constraintTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100;"
+};
 
 
 Foam::contactMethods::perturbedLagrange::perturbedLagrange
@@ -22,7 +35,7 @@ Foam::contactMethods::perturbedLagrange::perturbedLagrange
     const dictionary& coeffs
 )
 :
-    uzawaMethod(patch, coeffs, 10, "constraintTolerance", "|g + lambda/eps|")
+    uzawaMethod(patch, coeffs, "constraintTolerance", "|g + lambda/eps|")
 {
     // The exact methods' stopping test would be wrong here: at the fixed
     // point the penetration is lambda/eps, not zero

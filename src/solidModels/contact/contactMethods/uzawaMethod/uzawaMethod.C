@@ -15,7 +15,7 @@ Foam::contactMethods::uzawaMethod::uzawaMethod
     const dictionary& coeffs
 )
 :
-    uzawaMethod(patch, coeffs, 1, "penetrationTolerance", "<-g>")
+    uzawaMethod(patch, coeffs, "penetrationTolerance", "<-g>")
 {}
 
 
@@ -23,17 +23,16 @@ Foam::contactMethods::uzawaMethod::uzawaMethod
 (
     const fvPatch& patch,
     const dictionary& coeffs,
-    const scalar defaultScale,
     const word& constraintTolName,
     const string& measureName
 )
 :
     contactMethod(patch, coeffs),
-    scale_(coeffs.getOrDefault<scalar>("penaltyScale", defaultScale)),
+    scale_(coeffs.get<scalar>("penaltyScale")),
     measureName_(measureName),
-    constraintTol_(coeffs.getOrDefault<scalar>(constraintTolName, 1e-3)),
-    multiplierTol_(coeffs.getOrDefault<scalar>("multiplierTolerance", 1e-6)),
-    maxUpdates_(coeffs.getOrDefault<label>("maxUpdates", 100)),
+    constraintTol_(coeffs.get<scalar>(constraintTolName)),
+    multiplierTol_(coeffs.get<scalar>("multiplierTolerance")),
+    maxUpdates_(coeffs.get<label>("maxUpdates")),
     nUpdates_(0),
     converged_(true)
 {
