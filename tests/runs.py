@@ -39,6 +39,14 @@ def patch(method):
                                 ["-method", method], controls=verbose_for(method))
 
 
+def barrier_kappa_update(method):
+    """The barrier with kappaScale 0.01 (verbose): (name, run)."""
+    name = "contactPatchTest_%s_kappaUpdate" % method
+    return name, harness.tutorial_run(
+        "contactPatchTest", name, ["-method", method], controls="verbose yes;",
+        edit=lambda case: harness.set_method_coeff(case, method, "kappaScale", "0.01"))
+
+
 def steel_aluminium(method):
     return harness.tutorial_run("hertzCylinder", "hertzCylinder_steelAluminium_" + method,
                                 ["-method", method, "-materials", "steelAluminium"])

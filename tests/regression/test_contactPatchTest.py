@@ -49,14 +49,6 @@ def test_patch_test_closed_form(method):
     ck.verify()
 
 
-def barrier_kappa_update(method):
-    """The barrier with kappaScale 0.01 (verbose): (name, run)."""
-    name = "contactPatchTest_%s_kappaUpdate" % method
-    return name, harness.tutorial_run(
-        "contactPatchTest", name, ["-method", method], controls="verbose yes;",
-        edit=lambda case: harness.set_coeff(case, "kappaScale", "0.01"))
-
-
 @pytest.mark.parametrize("method", [pytest.param(m, marks=group(m))
                                     for m in methods_where(answer="barrier")])
 def test_barrier_kappa_doubles_and_converges(method):
@@ -67,7 +59,7 @@ def test_barrier_kappa_doubles_and_converges(method):
     as a step that looked converged at the old kappa would not be. Its
     restart is in test_restart.py."""
     ck = harness.Checks()
-    name, r = barrier_kappa_update(method)
+    name, r = runs.barrier_kappa_update(method)
     if ck.run(r, name):
         ck.barrier_gaps_open(r["case"], name)
         row = contactreport.last_row(r["case"], "lowerTop") or {}
@@ -86,8 +78,8 @@ def test_linear_interface_law_equals_penalty(method):
     name = "contactPatchTest_%s_n1" % method
 
     def linear_law(case):
-        harness.set_coeff(case, "cN", "1e8")
-        harness.set_coeff(case, "n", "1")
+        harness.set_method_coeff(case, method, "cN", "1e8")
+        harness.set_method_coeff(case, method, "n", "1")
     r = harness.tutorial_run("contactPatchTest", name, ["-method", method], edit=linear_law)
     if ck.run(r, name):
         ck.stress_fields_agree(harness.need(patch(PENALTY)), r["case"],
@@ -133,7 +125,8 @@ def test_consistent_method_exact_for_any_gamma0(method, gamma0):
     ck = harness.Checks()
     name = "contactPatchTest_%s_gamma0_%s" % (method, gamma0)
     ck.run(harness.tutorial_run("contactPatchTest", name, ["-method", method],
-                                edit=lambda case: harness.set_coeff(case, "gamma0", gamma0)),
+                                edit=lambda case: harness.set_method_coeff(case, method, "gamma0",
+                                                                           gamma0)),
            name)
     ck.verify()
 
@@ -156,5 +149,6 @@ def test_onNonConvergence_continue_writes_and_flags():
           and "going on (onNonConvergence continue)" in out
           and row is not None and row.get("converged") == 0)
     ck.add(name + "/written_and_flagged", ok,
-           note="(rc=%d, converged column %s)" % (rc, None if row is None else row.get("converged")))
+           note="(rc=%d, converged column %s)"
+           % (rc, None if row is None else row.get("converged")))
     ck.verify()

@@ -69,7 +69,8 @@ def test_nearRigid_stiffness_weights(method):
     ck.run(harness.tutorial_run("hertzCylinder", name,
                                 ["-method", method, "-materials", "nearRigidCylinder",
                                  "-slave", "block"],
-                                edit=lambda case: harness.set_coeff(case, "weights", "stiffness")),
+                                edit=lambda case: harness.set_method_coeff(case, method, "weights",
+                                                                           "stiffness")),
            name)
     ck.verify()
 

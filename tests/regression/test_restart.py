@@ -113,9 +113,8 @@ def test_barrier_restart_keeps_doubled_kappa(method):
     continues in 1 corrector with no doubling (measured); a lost kappa
     would start from kappaScale K/h, whose gap is half the written one,
     and double it again in ~30 correctors."""
-    from regression.test_contactPatchTest import barrier_kappa_update
     ck = harness.Checks()
-    name, r = barrier_kappa_update(method)
+    name, r = runs.barrier_kappa_update(method)
     case = harness.need(r, name)
     tag = name + "Restart"
     if restart_reproduces(ck, case, tag, max_correctors=3):
