@@ -1,7 +1,8 @@
 # contact4foam: the README's commands.
 #   make run    install what is missing, build, run the default tutorial
 #               (in a copy under $FOAM_RUN; it prints where)
-#   make test   install what is missing, build, run all tests
+#   make test   install what is missing, build, run all tests (pytest on
+#               every core; a subset: make test PYTEST_ARGS="-k penalty")
 #   make bench  run the benchmarks
 #   make clean  remove all build output (distclean: also the OpenFOAM kit)
 
@@ -11,6 +12,9 @@ ENV    := source etc/bashrc
 # The clone this make runs in, not the one that last ran bin/bootstrap
 export C4F_ROOT := $(CURDIR)
 PY     := /usr/bin/python3
+# pytest: a worker per core, the tests that share a run kept on one worker
+PYTEST := $(PY) -m pytest tests -n auto --dist loadgroup
+PYTEST_ARGS ?=
 DEFAULT_TUTORIAL := tutorials/hertzCylinder
 
 .PHONY: all bootstrap build run test bench clean distclean shellcheck
@@ -33,7 +37,7 @@ run: build
 	    && echo "results: $$case (VTK/ for ParaView, log.* and postProcessing/contactReport)"
 
 test: build
-	@$(ENV) && $(PY) tests/run.py
+	@$(ENV) && $(PYTEST) $(PYTEST_ARGS)
 
 bench: build
 	@$(ENV) && $(PY) tests/bench/run.py && $(PY) tests/bench/searchBench.py

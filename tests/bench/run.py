@@ -76,7 +76,7 @@ sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
 sys.path.insert(0, os.path.join(ROOT, "tutorials/contactPatchTest/validation"))
 
 import numpy as np  # noqa: E402
-from c4fpost import blockmesh, contactfree, contactreport, foamio, kirsch  # noqa: E402
+from c4fpost import blockmesh, contactfree, contactreport, foamio, kirsch, methods  # noqa: E402
 import compareHertz  # noqa: E402
 import compareKirsch  # noqa: E402
 
@@ -89,7 +89,13 @@ SOLVER = "solidContactFoam"
 CAPPED = {"nCorrectors": "5000", "onNonConvergence": "continue"}
 ITERATIONS = (("plain", dict(CAPPED, acceleration="none")),
               ("accelerated", CAPPED))            # the default: anderson, depth 15
-PROBLEMS = ("contact-free", "lagrangeMultiplier", "penalty")
+# The methods come from the solver's selection table (c4fpost.methods):
+# the reference exact method, and the plain penalty (answer penalty, no
+# multipliers)
+LM = "lagrangeMultiplier"
+PENALTY = [m.name for m in methods.table().values()
+           if m.answer == "penalty" and m.multipliers == "none"][0]
+PROBLEMS = ("contact-free", LM, PENALTY)
 # The near-rigid indenter's cases: (label, Allrun arguments)
 NEAR_RIGID = tuple(("hertzCylinder nearRigidCylinder -slave " + slave,
                     ("-materials", "nearRigidCylinder", "-slave", slave))
@@ -284,7 +290,7 @@ def convergence_rows():
         cases.append((label, PROBLEMS))
         tag = "hertz" if level == 1 else "hertz_refine%d" % level
         for it, entries in ITERATIONS:
-            for method in ("lagrangeMultiplier", "penalty"):
+            for method in PROBLEMS[1:]:
                 note((label, method, it),
                      bench_case("conv_%s_%s_%s" % (tag, method, it),
                                 os.path.join(tut, "hertzCylinder"), entries,
@@ -593,10 +599,14 @@ def perturbed_bench():
 
 # --------------------------------------------------------------------------
 SPHERE_LEVELS = (1.0, 1.5)
-# The methods whose answer is the exact constraint (g_N = 0 at the converged
-# state): hertzSphere's two mesh levels are run for these
-EXACT_METHODS = ("lagrangeMultiplier", "directElimination", "augmentedLagrange",
-                 "crossConstraint", "nitsche")
+
+
+def exact_methods():
+    """The methods whose answer is the exact constraint (g_N = 0 at the
+    converged state; their trait answer=exact), the reference first:
+    hertzSphere's two mesh levels are run for these."""
+    exact = [m.name for m in methods.table().values() if m.answer == "exact"]
+    return sorted(exact, key=lambda m: m != LM)
 
 
 def method_runs(method, tutorial, level=None):
@@ -627,11 +637,10 @@ def methods_bench():
     import comparePatchTest
     sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzSphere/validation"))
     import compareSphere
-    methods = [line.split()[0] for line in sh("%s -listMethods" % SOLVER, ROOT).splitlines()
-               if line.strip()]
-    print("\n== every method side by side: %s" % ", ".join(methods), flush=True)
+    names = methods.names()
+    print("\n== every method side by side: %s" % ", ".join(names), flush=True)
     rows = []
-    for m in methods:
+    for m in names:
         row = dict(method=m)
         h = method_runs(m, "hertzCylinder")
         row["hertz"] = h
@@ -679,7 +688,7 @@ def methods_bench():
     sph = ["", "| method | level (faces across a) | cells | correctors | wall [s] | p0 error |"
            " a error [face widths] | RMS p - Hertz (r < 0.8 a) |",
            "| --- | --- | --- | --- | --- | --- | --- | --- |"]
-    for m in [x for x in EXACT_METHODS if x in methods]:
+    for m in exact_methods():
         for level in SPHERE_LEVELS:
             r = method_runs(m, "hertzSphere", level)
             if r["ncorr"] is None or r["rc"] != 0:
@@ -732,7 +741,9 @@ def methods_chart(rows, png):
 
 # --------------------------------------------------------------------------
 # Friction (issue 10)
-FRICTION_CATTANEO_METHODS = ("lagrangeMultiplier", "augmentedLagrange", "penalty")
+# The issue's minimum (issue 10): the reference, augmentedLagrange and the plain
+# penalty
+FRICTION_CATTANEO_METHODS = (LM, "augmentedLagrange", PENALTY)
 CATTANEO_LEVELS = (1, 2)       # Allrun -refine N: N times the faces across a
 
 
@@ -806,11 +817,10 @@ def friction_bench():
     sys.path.insert(0, os.path.join(ROOT, "tutorials/slidingBlock/validation"))
     import compareSliding
     import compareStick
-    methods = [line.split()[0] for line in sh("%s -listMethods" % SOLVER, ROOT).splitlines()
-               if line.strip()]
+    names = methods.names()
     print("\n== friction: cattaneoMindlin (%s) at -refine %s, slidingBlock and the stick patch"
           " test for %s" % (", ".join(FRICTION_CATTANEO_METHODS),
-                            " and ".join("%d" % n for n in CATTANEO_LEVELS), ", ".join(methods)),
+                            " and ".join("%d" % n for n in CATTANEO_LEVELS), ", ".join(names)),
           flush=True)
 
     def fmt(v, f="%.3g"):
@@ -818,7 +828,7 @@ def friction_bench():
 
     # Cattaneo-Mindlin at two mesh levels
     cm = []
-    for m in [x for x in FRICTION_CATTANEO_METHODS if x in methods]:
+    for m in [x for x in FRICTION_CATTANEO_METHODS if x in names]:
         for level in CATTANEO_LEVELS:
             tag = "" if level == 1 else "_refine%d" % level
             allrun = ["-method", m] + ([] if level == 1 else ["-refine", "%d" % level])
@@ -874,7 +884,7 @@ def friction_bench():
     sb = ["", "| method | correctors per step (updates) | wall [s] |"
           " F_T/(mu F_N) - 1, contactReport | F_T/(mu F_N) - 1, traction field |"
           " faces slipping / in contact |", "| --- | --- | --- | --- | --- | --- |"]
-    for m in methods:
+    for m in names:
         r = bench_case("friction_sliding_%s" % m, os.path.join(ROOT, "tutorials/slidingBlock"),
                        allrun=["-method", m])
         if r["rc"] != 0 or not r["steps"]:
@@ -904,7 +914,7 @@ def friction_bench():
           " stress error against the exact state | spread (max - min) over the cells |"
           " sigma_xy / tau - 1 | sigma_yy / exact - 1 |",
           "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
-    for m in methods:
+    for m in names:
         r = bench_case("friction_stick_%s" % m, os.path.join(ROOT, "tutorials/contactPatchTest"),
                        allrun=["-method", m, "-friction", "stick", "-shear", "one"])
         if r["rc"] != 0 or not r["steps"]:
