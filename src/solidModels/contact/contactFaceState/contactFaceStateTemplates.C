@@ -32,6 +32,7 @@ void Foam::contactFaceState::copySet
 {
     to.names = from.names;
     to.initial = from.initial;
+    to.written = from.written;
     to.dimensions.setSize(from.dimensions.size());
     to.fields.setSize(from.fields.size());
     forAll(from.fields, i)
@@ -47,8 +48,10 @@ void Foam::contactFaceState::assignSet(const fieldSet<Type>& from)
 {
     forAll(from.names, j)
     {
-        Field<Type>& f =
-            addField<Type>(from.names[j], from.initial[j], from.dimensions[j]);
+        Field<Type>& f = addField<Type>
+        (
+            from.names[j], from.initial[j], from.dimensions[j], from.written[j]
+        );
         if (from.fields[j].size() == size_)
         {
             f = from.fields[j];
@@ -63,7 +66,7 @@ void Foam::contactFaceState::readSet(const dictionary& patchDict)
     fieldSet<Type>& fs = set<Type>();
     forAll(fs.names, i)
     {
-        if (patchDict.found(fs.names[i]))
+        if (fs.written[i] && patchDict.found(fs.names[i]))
         {
             fs.fields[i] = Field<Type>(fs.names[i], patchDict, size_);
         }
@@ -77,7 +80,10 @@ void Foam::contactFaceState::writeSet(Ostream& os) const
     const fieldSet<Type>& fs = set<Type>();
     forAll(fs.names, i)
     {
-        fs.fields[i].writeEntry(fs.names[i], os);
+        if (fs.written[i])
+        {
+            fs.fields[i].writeEntry(fs.names[i], os);
+        }
     }
 }
 
@@ -94,7 +100,10 @@ void Foam::contactFaceState::mapSet
     forAll(from.names, j)
     {
         const Type init = from.initial[j];
-        Field<Type>& f = addField<Type>(from.names[j], init, from.dimensions[j]);
+        Field<Type>& f = addField<Type>
+        (
+            from.names[j], init, from.dimensions[j], from.written[j]
+        );
         f = Field<Type>(size_, init);
         f.map(from.fields[j], m);
     }
@@ -120,8 +129,10 @@ void Foam::contactFaceState::rmapSet
 {
     forAll(from.names, j)
     {
-        addField<Type>(from.names[j], from.initial[j], from.dimensions[j])
-            .rmap(from.fields[j], addr);
+        addField<Type>
+        (
+            from.names[j], from.initial[j], from.dimensions[j], from.written[j]
+        ).rmap(from.fields[j], addr);
     }
 }
 
@@ -133,7 +144,8 @@ Foam::Field<Type>& Foam::contactFaceState::addField
 (
     const word& name,
     const Type& initial,
-    const dimensionSet& dims
+    const dimensionSet& dims,
+    const bool written
 )
 {
     fieldSet<Type>& fs = set<Type>();
@@ -145,6 +157,7 @@ Foam::Field<Type>& Foam::contactFaceState::addField
     fs.names.append(name);
     fs.initial.append(initial);
     fs.dimensions.append(new dimensionSet(dims));
+    fs.written.append(written);
     fs.fields.append(new Field<Type>(size_, initial));
     return fs.fields.last();
 }

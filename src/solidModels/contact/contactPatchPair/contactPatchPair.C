@@ -10,6 +10,7 @@
 #include "ListOps.H"
 #include "mergePoints.H"
 #include "boundBox.H"
+#include "solidPatchTractions.H"
 #include "syncTools.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -571,4 +572,78 @@ Foam::tmp<Foam::vectorField> Foam::contactPatchPair::masterForce
     }
 
     return masterSlice(sumOverProcessors(F)());
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::contactPatchPair::relativeDisplacement
+(
+    const vectorField& slaveD,
+    List<List<vector>>& corrections
+) const
+{
+    tmp<vectorField> trel(slaveD - slaveValues(masterFaceD_));
+    vectorField& rel = trel.ref();
+
+    const word gradName("gradD");
+    const tensorField slaveGrad
+    (
+        slave_.lookupPatchField<volTensorField, tensor>(gradName)
+       .patchInternalField()
+    );
+    const tensorField masterGrad
+    (
+        gatherMaster
+        (
+            master_.lookupPatchField<volTensorField, tensor>
+            (
+                gradName
+            ).patchInternalField()()
+        )
+    );
+    corrections = overlapCorrections(slaveGrad, masterGrad);
+    forAll(corrections, i)
+    {
+        forAll(corrections[i], k)
+        {
+            rel[i] -= overlapWeights_[i][k]*corrections[i][k];
+        }
+    }
+    return trel;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::contactPatchPair::masterStiffness() const
+{
+    const fvMesh& mesh = master_.boundaryMesh().mesh();
+    const scalarField masterKh
+    (
+        solidPatchTractions::impK(master_)*master_.magSf()
+       /scalarField(mesh.V().field(), master_.faceCells())
+    );
+    return slaveValues(masterKh);
+}
+
+
+Foam::tmp<Foam::symmTensorField>
+Foam::contactPatchPair::masterCellStress() const
+{
+    return slaveValues
+    (
+        solidPatchTractions::sigma(master_).patchInternalField()()
+    );
+}
+
+
+void Foam::contactPatchPair::gatherMasterData
+(
+    scalarField& K,
+    scalarField& delta,
+    vectorField& C,
+    scalarField& magSf
+) const
+{
+    K = gatherMaster(solidPatchTractions::impK(master_)());
+    delta = gatherMaster(scalarField(1.0/master_.deltaCoeffs()));
+    C = gatherMaster(solidPatchTractions::explicitNormalTraction(master_)());
+    magSf = gatherMaster(master_.magSf());
 }

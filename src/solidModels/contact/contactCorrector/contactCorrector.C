@@ -1,0 +1,377 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "contactCorrector.H"
+#include "contactReporter.H"
+#include "solidPatchTractions.H"
+#include "fvMesh.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Cell size normal to each face, V/A
+Foam::tmp<Foam::scalarField> cellSizeNormal(const Foam::fvPatch& patch)
+{
+    const Foam::fvMesh& mesh = patch.boundaryMesh().mesh();
+    return
+        Foam::scalarField(mesh.V().field(), patch.faceCells())
+       /patch.magSf();
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::contactCorrector::beginCorrector
+(
+    const fvPatch& patch,
+    contactHistory& h
+)
+{
+    const label timeIndex = patch.boundaryMesh().mesh().time().timeIndex();
+    if (timeIndex != timeIndex_)
+    {
+        timeIndex_ = timeIndex;
+        h.method().beginStep();
+        multiplierHistory_.clear();
+        nCorrectors_ = 0;
+        updateTime_ = 0;
+        normalForce_ = GREAT;
+    }
+    ++nCorrectors_;
+}
+
+
+void Foam::contactCorrector::build
+(
+    const fvPatch& slave,
+    const fvPatch& master,
+    contactSettings& settings
+)
+{
+    // The default reaches ten of the slave's largest cells
+    if (settings.searchDistance() < 0)
+    {
+        const scalarField h(cellSizeNormal(slave));
+        settings.setSearchDistance
+        (
+            10*returnReduce(h.size() ? max(h) : 0, maxOp<scalar>())
+        );
+    }
+    pair_.reset
+    (
+        new contactPatchPair
+        (
+            slave, master, settings.searchDistance(),
+            settings.smoothedNormals(), settings.rebuildTolerance()
+        )
+    );
+    coupling_.reset
+    (
+        new contactInterfaceCoupling
+        (
+            pair_(),
+            contactConstraintGroups::sideNames[settings.constraintFaces()]
+        )
+    );
+}
+
+
+Foam::contactSlaveState Foam::contactCorrector::state
+(
+    const fixedGradientFvPatchVectorField& slave,
+    const contactHistory& h,
+    List<List<vector>>& stickCorrection
+) const
+{
+    const fvPatch& patch = slave.patch();
+
+    contactSlaveState s;
+    s.gap = pair_->gap();
+    s.normal = pair_->normal();
+    s.K = solidPatchTractions::impK(patch);
+    s.h = cellSizeNormal(patch);
+    s.delta = 1.0/patch.deltaCoeffs();
+    s.reaction = h.pressure();
+    s.traction = h.traction();
+    // Frictionless faces need no tangential kinematics (a transfer less)
+    if (h.friction().hasTangentialLaw())
+    {
+        s.relative = pair_->relativeDisplacement(slave, stickCorrection);
+    }
+    s.inRange = pair_->inRange();
+    s.stiffness = s.K/s.h;
+    s.masterStiffness = pair_->masterStiffness();
+    s.pairStiffness =
+        1.0/(1.0/s.stiffness + 1.0/max(s.masterStiffness, SMALL));
+    if (h.method().usesCellStress())
+    {
+        // The cells' own stress, not the face value the last traction set
+        s.cellStress =
+            solidPatchTractions::sigma(patch).patchInternalField();
+        s.masterCellStress = pair_->masterCellStress();
+    }
+    return s;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactCorrector::contactCorrector()
+:
+    pair_(),
+    coupling_(),
+    lastState_(),
+    timeIndex_(-1),
+    nCorrectors_(0),
+    updateTime_(0),
+    timer_(),
+    normalForce_(GREAT),
+    multiplierHistory_()
+{}
+
+
+Foam::contactCorrector::contactCorrector(const contactCorrector& c)
+:
+    pair_(),
+    coupling_(),
+    lastState_(),
+    timeIndex_(c.timeIndex_),
+    nCorrectors_(c.nCorrectors_),
+    updateTime_(c.updateTime_),
+    timer_(),
+    normalForce_(c.normalForce_),
+    multiplierHistory_()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::contactCorrector::clearGeometry()
+{
+    pair_.clear();
+    coupling_.clear();
+}
+
+
+void Foam::contactCorrector::correct
+(
+    const fixedGradientFvPatchVectorField& slave,
+    const fvPatchVectorField& master,
+    contactSettings& settings,
+    contactHistory& h
+)
+{
+    timer_.resetTime();
+    const fvPatch& patch = slave.patch();
+    beginCorrector(patch, h);
+
+    const bool newStep = nCorrectors_ == 1;
+    const bool firstUpdate = !pair_.valid();
+    if (firstUpdate)
+    {
+        build(patch, master.patch(), settings);
+    }
+
+    // 1. Both surfaces in the current configuration, and the projection
+    const vectorField Df(slave);
+    pair_->update(master, Df);
+
+    // 2. The reaction of the current state, from its face values and
+    // gradient: the last solve's pressure, or the pressure of the state
+    // the outer loop set (an accelerated iterate); so the method's decision
+    // depends on the current D alone, not on how it was reached
+    h.explicitTraction() = solidPatchTractions::explicitNormalTraction(patch);
+    if (!firstUpdate)
+    {
+        h.traction() =
+            solidPatchTractions::impK(patch)*slave.gradient()
+          + h.explicitTraction();
+        h.pressure() = h.traction() & pair_->normal();
+    }
+
+    // 3. The state
+    List<List<vector>> stickCorrection;
+    lastState_ = state(slave, h, stickCorrection);
+
+    // 4. The method's decision, then the friction model's on the faces the
+    // method coupled; a new load step first commits the friction history
+    // of the converged state it starts from
+    contactSlaveCondition& cond = h.cond();
+    if (newStep)
+    {
+        h.friction().beginStep(lastState_, cond);
+    }
+    h.method().correct(lastState_, cond);
+    h.friction().correct(lastState_, cond);
+
+    // 5. The coupling of this corrector
+    contactInterfaceCoupling::inputs in;
+    in.coupled = cond.coupled;
+    in.compliance = cond.compliance;
+    in.pressure0 = cond.explicitPressure;
+    in.gap = lastState_.gap;
+    in.normal = lastState_.normal;
+    in.slaveK = lastState_.K;
+    in.slaveDelta = lastState_.delta;
+    in.slaveC = h.explicitTraction();
+    pair_->gatherMasterData
+    (
+        in.masterK, in.masterDelta, in.masterC, in.masterMagSf
+    );
+    in.slaveDf = Df;
+    in.masterDf = pair_->masterFaceDisplacement();
+    in.tied = cond.tied;
+    if (h.friction().hasTangentialLaw())
+    {
+        in.stickPoint = h.friction().stickPoints();
+        in.stickCorrection.transfer(stickCorrection);
+    }
+    in.tangentialTraction = cond.tangentialTraction;
+    in.tangentialMultiplier = cond.tangentialMultiplier;
+    in.D = &slave.primitiveField();
+
+    coupling_->set(in);
+}
+
+
+void Foam::contactCorrector::finish
+(
+    const fvPatch& slave,
+    const contactHistory& h
+)
+{
+    // The force this corrector starts from: its change in the corrector is
+    // part of the convergence test
+    normalForce_ = gSum(h.pressure()*slave.magSf());
+
+    const contactReporter reporter(slave, h, this);
+    reporter.writeFields();
+
+    updateTime_ += timer_.elapsedTime();
+
+    const fvMesh& mesh = slave.boundaryMesh().mesh();
+    if
+    (
+        mesh.solutionDict().subOrEmptyDict("solidMechanics")
+       .getOrDefault<bool>("verbose", false)
+    )
+    {
+        reporter.writeCorrectorLine(Info);
+    }
+}
+
+
+bool Foam::contactCorrector::converged
+(
+    const fvPatch& slave,
+    const contactHistory& h,
+    const scalar tolerance
+) const
+{
+    const label changes = h.activeSetChanges();
+
+    // The change of the normal force in this corrector: from the state it
+    // started from to the solve's (the pressures evaluate() just set), the
+    // force residual of the fixed-point map, whatever step the outer loop
+    // then takes
+    //
+    // With no active face the law's force is zero and what the faces
+    // carry is the solve's residual traction (measured: F_N of 1e-8 to
+    // 1e-5 N changing sign every corrector after a lift-off, whose relative
+    // change never fell below the tolerance): the residual test covers it,
+    // so the force test is left out
+    const scalar F = gSum(h.pressure()*slave.magSf());
+    const scalar dF = mag(F - normalForce_);
+    const label nActive = h.nActive();
+    return
+        changes == 0
+     && (nActive == 0 || dF <= tolerance*max(mag(F), VSMALL));
+}
+
+
+bool Foam::contactCorrector::updateMultipliers
+(
+    const fvPatch& slave,
+    contactHistory& h
+)
+{
+    if (!valid())
+    {
+        return false;
+    }
+
+    // The converged state: the last update's geometry (it changed by less
+    // than the tolerance since) and the reaction of the last solve
+    lastState_.reaction = h.pressure();
+
+    const contactFaceState& ms = h.method().state();
+    if (ms.found("contactMultiplier"))
+    {
+        multiplierRecord rec;
+        rec.update = h.method().nMultiplierUpdates();
+        rec.multiplier = ms["contactMultiplier"];
+        rec.gap = lastState_.gap;
+        rec.pressure = h.pressure();
+        multiplierHistory_.append(rec);
+    }
+
+    // The tangential multipliers of an augmenting method are updated with
+    // the normal ones, from the same converged state
+    lastState_.traction = h.traction();
+    const bool updated =
+        h.method().updateMultipliers(lastState_, h.cond())
+      | h.friction().updateMultipliers
+        (
+            lastState_, h.cond(), h.method().multiplierTolerance()
+        );
+    if (updated)
+    {
+        contactReporter(slave, h, this).writeFields();
+    }
+    return updated;
+}
+
+
+Foam::scalar Foam::contactCorrector::stepLimit
+(
+    const fvPatchVectorField& slave,
+    const fvPatchVectorField& master,
+    const contactHistory& h
+)
+{
+    // The method is the same on every processor, so all take this branch
+    // together
+    if (!valid() || !h.method().limitsStep())
+    {
+        return 1;
+    }
+
+    // The gaps at the current D (the update's), by the same search as a
+    // corrector's; lastState_ holds those the corrector started from
+    const vectorField Df(slave);
+    pair_->update(master, Df);
+
+    const scalar alpha = returnReduce
+    (
+        h.method().stepLimit(lastState_, pair_->gap(), pair_->inRange()),
+        minOp<scalar>()
+    );
+
+    if (alpha < 1)
+    {
+        Info<< "    contact " << slave.patch().name() << ": step limited to "
+            << alpha << " of the update (minGap "
+            << contactReporter::minGap(lastState_.gap, lastState_.inRange)
+            << " -> " << contactReporter::minGap(pair_->gap(), pair_->inRange())
+            << " m)" << endl;
+    }
+    return alpha;
+}
+
+
+// ************************************************************************* //

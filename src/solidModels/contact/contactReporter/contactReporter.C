@@ -1,0 +1,267 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "contactReporter.H"
+#include "contactCorrector.H"
+#include "volFields.H"
+#include "OStringStream.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The registered output field of the given name, created (zero inside,
+//  calculated on every patch, written with each time) on first use
+template<class Type>
+Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& outputField
+(
+    const Foam::fvMesh& mesh,
+    const Foam::word& name,
+    const Foam::dimensionSet& dims
+)
+{
+    using namespace Foam;
+    typedef GeometricField<Type, fvPatchField, volMesh> fieldType;
+
+    if (!mesh.foundObject<fieldType>(name))
+    {
+        fieldType* fld = new fieldType
+        (
+            IOobject
+            (
+                name,
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::AUTO_WRITE
+            ),
+            mesh,
+            dimensioned<Type>(dims, Zero)
+        );
+        fld->store();
+    }
+    return mesh.lookupObjectRef<fieldType>(name);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::scalar Foam::contactReporter::minGap
+(
+    const scalarField& gap,
+    const boolList& inRange
+)
+{
+    scalar g = GREAT;
+    forAll(gap, facei)
+    {
+        if (inRange[facei])
+        {
+            g = min(g, gap[facei]);
+        }
+    }
+    return returnReduce(g, minOp<scalar>());
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::contactReporter::setFields
+(
+    const scalarField& gap,
+    const scalarField& active
+) const
+{
+    const fvMesh& mesh = patch_.boundaryMesh().mesh();
+    const label patchi = patch_.index();
+
+    outputField<scalar>(mesh, "contactPressure", dimPressure)
+        .boundaryFieldRef()[patchi] == history_.pressure();
+    outputField<scalar>(mesh, "contactGap", dimLength)
+        .boundaryFieldRef()[patchi] == gap;
+    outputField<vector>(mesh, "contactTraction", dimPressure)
+        .boundaryFieldRef()[patchi] == history_.traction();
+    outputField<scalar>(mesh, "contactActive", dimless)
+        .boundaryFieldRef()[patchi] == active;
+
+    // The method's and the friction model's state, where they have one
+    // (e.g. contactMultiplier, contactStick, contactSlip)
+    if (history_.slave())
+    {
+        for
+        (
+            const contactFaceState* ms
+          : {&history_.method().state(), &history_.friction().state()}
+        )
+        {
+            for (const word& name : ms->names<scalar>())
+            {
+                outputField<scalar>(mesh, name, ms->dimensions<scalar>(name))
+                    .boundaryFieldRef()[patchi] == ms->field<scalar>(name);
+            }
+            for (const word& name : ms->names<vector>())
+            {
+                outputField<vector>(mesh, name, ms->dimensions<vector>(name))
+                    .boundaryFieldRef()[patchi] == ms->field<vector>(name);
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactReporter::contactReporter
+(
+    const fvPatch& patch,
+    const contactHistory& history,
+    const contactCorrector* corrector
+)
+:
+    patch_(patch),
+    history_(history),
+    corrector_(corrector)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::contactReporter::writeFields() const
+{
+    if (corrector_)
+    {
+        setFields
+        (
+            corrector_->pair().gap(),
+            contactHistory::activeFraction(history_.cond().active)
+        );
+    }
+    else
+    {
+        setFields(scalarField(patch_.size(), 0), pos(history_.pressure()));
+    }
+}
+
+
+Foam::contactReporter::row Foam::contactReporter::report() const
+{
+    row r;
+    if (!corrector_)
+    {
+        return r;
+    }
+
+    const bool searched = corrector_->hasPair();
+    const scalarField& A = patch_.magSf();
+    const scalarField gap
+    (
+        searched
+      ? corrector_->pair().gap()
+      : scalarField(patch_.size(), GREAT)
+    );
+    const vectorField n
+    (
+        searched ? corrector_->pair().normal() : vectorField(-patch_.nf())
+    );
+    const vectorField& traction = history_.traction();
+    const scalarField& pressure = history_.pressure();
+    const boolList& active = history_.cond().active;
+
+    forAll(A, facei)
+    {
+        const vector F(traction[facei]*A[facei]);
+        const scalar Fn = F & n[facei];
+        r.normalForce += Fn;
+        r.tangentialForce += mag(F - Fn*n[facei]);
+        if (facei < active.size() && active[facei])
+        {
+            r.contactArea += A[facei];
+            ++r.activeFaces;
+        }
+        r.maxPressure = max(r.maxPressure, pressure[facei]);
+        r.maxPenetration = max(r.maxPenetration, -gap[facei]);
+    }
+
+    r.minGap =
+        searched
+      ? minGap(corrector_->pair().gap(), corrector_->pair().inRange())
+      : GREAT;
+
+    reduce(r.normalForce, sumOp<scalar>());
+    reduce(r.tangentialForce, sumOp<scalar>());
+    reduce(r.contactArea, sumOp<scalar>());
+    reduce(r.maxPressure, maxOp<scalar>());
+    reduce(r.maxPenetration, maxOp<scalar>());
+    reduce(r.activeFaces, sumOp<label>());
+    r.correctors = returnReduce(corrector_->nCorrectors(), maxOp<label>());
+    r.activeSetChanges = history_.activeSetChanges();
+    r.multiplierUpdates = history_.method().nMultiplierUpdates();
+    r.updateTime = returnReduce(corrector_->updateTime(), maxOp<scalar>());
+    return r;
+}
+
+
+Foam::string Foam::contactReporter::summary() const
+{
+    if (!corrector_)
+    {
+        return string();
+    }
+
+    const row r(report());
+    OStringStream os;
+    os  << "F_N = " << r.normalForce
+        << "  active = " << r.activeFaces
+        << "  maxPenetration = " << r.maxPenetration
+        << "  minGap = " << r.minGap
+        << "  changes = " << r.activeSetChanges;
+    const frictionModel& friction = history_.friction();
+    if (friction.hasTangentialLaw())
+    {
+        const scalarField& stick = friction.stickFlags();
+        os  << "  F_T = " << r.tangentialForce
+            << "  stick = "
+            << returnReduce
+               (
+                   label(std::count(stick.begin(), stick.end(), 1.0)),
+                   sumOp<label>()
+               )
+            << "  slip = "
+            << returnReduce
+               (
+                   label(std::count(stick.begin(), stick.end(), 0.0)),
+                   sumOp<label>()
+               );
+    }
+    if (history_.method().updatesMultipliers())
+    {
+        os  << "  multiplierUpdates = " << r.multiplierUpdates;
+    }
+    os  << "  contactTime = " << r.updateTime << " s";
+    return os.str();
+}
+
+
+void Foam::contactReporter::writeCorrectorLine(Ostream& os) const
+{
+    const contactSlaveState& state = corrector_->lastState();
+    os  << "    contact " << patch_.name() << ": corrector "
+        << corrector_->nCorrectors()
+        << "  active = " << history_.nActive()
+        << "  changes = " << history_.activeSetChanges()
+        << "  F_N = " << corrector_->normalForce()
+        << "  max|g| = " << gMax(mag(state.gap))
+        << "  minGap = " << minGap(state.gap, state.inRange)
+        << "  masterFaceConstraints = "
+        << corrector_->coupling().nConstraintGroups()
+        << endl;
+}
+
+
+// ************************************************************************* //

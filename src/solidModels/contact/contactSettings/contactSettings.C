@@ -1,0 +1,241 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "contactSettings.H"
+#include "emptyFvPatch.H"
+#include "wedgeFvPatch.H"
+#include "fvMesh.H"
+#include "contactConstraintGroups.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::contactSettings::checkPatch
+(
+    const fvPatch& patch,
+    const dictionary& dict
+) const
+{
+    if (isA<emptyFvPatch>(patch) || isA<wedgeFvPatch>(patch))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Patch " << patch.name() << " of type " << patch.type()
+            << " cannot carry the condition solidContact (" << dict.name()
+            << "): contact needs a patch of type patch or wall"
+            << exit(FatalIOError);
+    }
+
+    // On a 2D mesh the faces must lie across the solution plane: a face
+    // whose normal has a part in the empty direction is not a contact
+    // surface of the plane problem
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+    const Vector<label>& solD = mesh.solutionD();
+    const vectorField n(patch.nf());
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (solD[d] == -1 && n.size() && max(mag(n.component(d))) > 1e-6)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Patch " << patch.name() << " (" << dict.name()
+                << ") has faces whose normal points in the empty direction "
+                << vector::componentNames[d] << " of this 2D mesh"
+                << " (max |n_" << vector::componentNames[d] << "| = "
+                << max(mag(n.component(d))) << "); a contact patch must"
+                << " be normal to the solution plane" << exit(FatalIOError);
+        }
+    }
+
+    if (normals_ != "faces" && normals_ != "smoothed")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid normals " << normals_ << " in " << dict.name()
+            << ": valid are faces (the master face normal) and smoothed"
+            << " (interpolated point normals)" << exit(FatalIOError);
+    }
+
+    if (!contactConstraintGroups::sideNames.found(constraintFaces_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid constraintFaces " << constraintFaces_ << " in "
+            << dict.name() << ": valid are "
+            << contactConstraintGroups::sideNames.sortedToc()
+            << " (slave: one constraint per slave face; master: one per"
+            << " master face; auto: per master face where the slave is"
+            << " much stiffer)" << exit(FatalIOError);
+    }
+
+    if (!(rebuildTolerance_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid rebuildTolerance " << rebuildTolerance_ << " in "
+            << dict.name() << ": it must be a length >= 0 [m]"
+            << " (0 rebuilds the search tree every corrector)"
+            << exit(FatalIOError);
+    }
+
+    if (shadowPatchName_ == patch.name())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'shadowPatch " << shadowPatchName_ << "' of "
+            << dict.name() << " names the patch itself; it must name the"
+            << " other patch of the contact pair" << exit(FatalIOError);
+    }
+
+    if (patch.boundaryMesh().findPatchID(shadowPatchName_) < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'shadowPatch " << shadowPatchName_ << "' of "
+            << dict.name() << ": there is no patch " << shadowPatchName_
+            << nl << "Valid patches: " << patch.boundaryMesh().mesh().boundaryMesh().names()
+            << exit(FatalIOError);
+    }
+
+    if (searchDistance_ != -1 && !(searchDistance_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid searchDistance " << searchDistance_ << " in "
+            << dict.name() << ": it must be a positive length [m]"
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::contactSettings::checkShadow
+(
+    const fvPatch& patch,
+    const dictionary& dict,
+    const word& typeName
+) const
+{
+    // The boundaryField dictionary holds the shadow's entry when D was read
+    // from a file; the field-level check in shadow() covers the rest
+    if (dict.parent() == dictionary::null)
+    {
+        return;
+    }
+    const dictionary& bf = dict.parent();
+    const dictionary* sdictPtr = bf.findDict(shadowPatchName_);
+    if (!sdictPtr)
+    {
+        return;
+    }
+    const dictionary& sdict = *sdictPtr;
+
+    const word shadowType(sdict.getOrDefault<word>("type", word::null));
+    if (shadowType != typeName)
+    {
+        FatalIOErrorInFunction(sdict)
+            << "The shadowPatch " << shadowPatchName_ << " of "
+            << dict.name() << " has type '" << shadowType
+            << "'; it must be " << typeName << " too, with shadowPatch "
+            << patch.name() << exit(FatalIOError);
+    }
+
+    const word back(sdict.getOrDefault<word>("shadowPatch", word::null));
+    if (back != patch.name())
+    {
+        FatalIOErrorInFunction(sdict)
+            << "Entry 'shadowPatch " << back << "' of " << sdict.name()
+            << " does not name " << patch.name() << ", whose shadowPatch"
+            << " it is; the two patches must name each other"
+            << exit(FatalIOError);
+    }
+
+    if (sdict.found("master"))
+    {
+        const bool shadowMaster = sdict.get<bool>("master");
+        if (shadowMaster == master_)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'master " << (master_ ? "yes" : "no") << "' of "
+                << dict.name() << " equals that of its shadowPatch "
+                << shadowPatchName_ << "; exactly one patch of a pair is"
+                << " the master: set 'master yes' on one and 'master no'"
+                << " on the other" << exit(FatalIOError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactSettings::contactSettings()
+:
+    dict_(),
+    shadowPatchName_(),
+    master_(false),
+    searchDistance_(-1),
+    normals_("faces"),
+    rebuildTolerance_(0),
+    constraintFaces_("auto")
+{}
+
+
+Foam::contactSettings::contactSettings
+(
+    const fvPatch& patch,
+    const dictionary& dict,
+    const word& typeName
+)
+:
+    dict_(dict),
+    shadowPatchName_(dict.get<word>("shadowPatch")),
+    master_(dict.get<bool>("master")),
+    searchDistance_(dict.getOrDefault<scalar>("searchDistance", -1)),
+    normals_(dict.getOrDefault<word>("normals", "faces")),
+    rebuildTolerance_(dict.getOrDefault<scalar>("rebuildTolerance", 0)),
+    constraintFaces_(dict.getOrDefault<word>("constraintFaces", "auto"))
+{
+    // The relaxed target these entries controlled no longer exists: the
+    // interface is implicit in the D matrix
+    for (const word obsolete : {"couplingRelaxation", "aitken"})
+    {
+        if (dict.found(obsolete))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << obsolete << "' of " << dict.name()
+                << " is no longer used: the contact interface is implicit"
+                << " in the D matrix, with no relaxed target; remove it"
+                << " (the outer correctors are accelerated in"
+                << " solidMechanics of system/fvSolution)"
+                << exit(FatalIOError);
+        }
+    }
+
+    // The originals: a copied dictionary has no parent (the boundaryField
+    // that holds the shadow's entry)
+    checkPatch(patch, dict);
+    checkShadow(patch, dict, typeName);
+
+    if (master_)
+    {
+        for (const word slaveOnly : {"method", "friction"})
+        {
+            if (dict.found(slaveOnly))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry '" << slaveOnly << "' of " << dict.name()
+                    << " on the master patch: the " << slaveOnly
+                    << " is chosen on the slave patch (" << shadowPatchName_
+                    << ", master no)" << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::contactSettings::writeSlave(Ostream& os) const
+{
+    os.writeEntry("normals", normals_);
+    os.writeEntry("rebuildTolerance", rebuildTolerance_);
+    os.writeEntry("constraintFaces", constraintFaces_);
+    if (dict_.found("searchDistance"))
+    {
+        os.writeEntry("searchDistance", searchDistance_);
+    }
+}
+
+
+// ************************************************************************* //
