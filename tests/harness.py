@@ -455,14 +455,3 @@ def methods_where(**traits):
 def methods_with_coeff(entry):
     """The methods with a default coefficient `entry` (e.g. gamma0)."""
     return [m.name for m in method_table().values() if entry in m.coeffs]
-
-
-def the_method(**traits):
-    """The one method with these traits (a reference such as the plain
-    penalty: answer penalty, no multipliers); fails where there is not
-    exactly one."""
-    found = methods_where(**traits)
-    if len(found) != 1:
-        raise RuntimeError("expected one method with %s in solidContactFoam -listMethods,"
-                           " found %s" % (traits, found or "none"))
-    return found[0]

@@ -5,6 +5,11 @@ import harness
 # The reference of the exact methods: the Lagrange multiplier
 LM = "lagrangeMultiplier"
 
+# The reference of the penalty family (a regularised multiplier converges
+# to its state): the plain penalty. A reference is a method by name, not a
+# list of facts: any other method is checked by its traits
+PENALTY = "penalty"
+
 
 def is_barrier(method):
     return harness.method_table()[method].answer == "barrier"

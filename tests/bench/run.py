@@ -90,11 +90,10 @@ CAPPED = {"nCorrectors": "5000", "onNonConvergence": "continue"}
 ITERATIONS = (("plain", dict(CAPPED, acceleration="none")),
               ("accelerated", CAPPED))            # the default: anderson, depth 15
 # The methods come from the solver's selection table (c4fpost.methods):
-# the reference exact method, and the plain penalty (answer penalty, no
-# multipliers)
+# the references: the exact methods' (the Lagrange multiplier) and the
+# penalty family's (the plain penalty)
 LM = "lagrangeMultiplier"
-PENALTY = [m.name for m in methods.table().values()
-           if m.answer == "penalty" and m.multipliers == "none"][0]
+PENALTY = "penalty"
 PROBLEMS = ("contact-free", LM, PENALTY)
 # The near-rigid indenter's cases: (label, Allrun arguments)
 NEAR_RIGID = tuple(("hertzCylinder nearRigidCylinder -slave " + slave,

@@ -7,10 +7,10 @@ import pytest
 
 import harness
 import runs
-from harness import methods_with_coeff, the_method
+from harness import methods_with_coeff
 
 LM = runs.LM
-PENALTY = the_method(answer="penalty", multipliers="none")
+PENALTY = runs.PENALTY
 REPRESENTATIVES = (LM, PENALTY)
 
 

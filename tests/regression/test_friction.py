@@ -21,13 +21,13 @@ import pytest
 
 import harness
 import runs
-from harness import methods_where, the_method
+from harness import methods_where
 
 LM = runs.LM
 # The issue's minimum for Cattaneo-Mindlin: the reference, augmentedLagrange
 # and the plain penalty (a method named here but not in -listMethods is
 # left out)
-CATTANEO = [m for m in (LM, "augmentedLagrange", the_method(answer="penalty", multipliers="none"))
+CATTANEO = [m for m in (LM, "augmentedLagrange", runs.PENALTY)
             if m in harness.method_table()]
 # The friction models issue 10 requires of -listFrictionModels
 REQUIRED_MODELS = ("frictionless", "stick", "coulomb")

@@ -12,12 +12,12 @@ import pytest
 
 import harness
 import runs
-from harness import methods_where, methods_with_coeff, the_method
+from harness import methods_where, methods_with_coeff
 
 METHODS = list(harness.method_table())
 LM = runs.LM
 # The plain penalty: the penalty answer with no multipliers
-PENALTY = the_method(answer="penalty", multipliers="none")
+PENALTY = runs.PENALTY
 hertz = runs.hertz
 
 
