@@ -3,7 +3,7 @@
 Cattaneo-Mindlin.
 
 The checks, their tolerances and where the tolerances come from live here,
-once: the tutorial prints them, the regression runner (tests/run.py) reads
+once: the tutorial prints them, the regression tests (tests/, pytest) reads
 them with --json.
 
 Data (latest time, t = 2 after Allrun, or --time; reference configuration,
@@ -68,7 +68,7 @@ Checks:
     coarsely). Measured 4.90 % (lagrangeMultiplier), 4.82 % (penalty):
     most of it is the stick law's own face-to-face noise (6 % of mu p0 at
     t = 1, where q should be 0), which does not fall with the mesh
-    (DEVELOPERS.md, "Friction in the implicit interface").
+    (docs/design-notes.md, "Friction in the implicit interface").
   - P' and Q' from contactReport against the sums above (1 %).
 """
 import os

@@ -2,7 +2,7 @@
 """contactPatchTest: the stress must be uniform across a non-matching interface.
 
 The checks, their tolerances and where the tolerances come from live here,
-once: the tutorial prints them, the regression runner (tests/run.py) reads
+once: the tutorial prints them, the regression tests (tests/, pytest) reads
 them with --json.
 
 Two blocks (lower 10 x 5 cells, upper 7 x 4, 1 m wide, column height

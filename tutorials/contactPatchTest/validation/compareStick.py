@@ -3,7 +3,7 @@
 compression across a non-matching interface held by friction.
 
 The checks, their tolerances and where the tolerances come from live here,
-once: the tutorial prints them, the regression runner (tests/run.py) reads
+once: the tutorial prints them, the regression tests (tests/, pytest) reads
 them with --json.
 
 The case (Allrun -shear one|two, 0/D): the upper block's top moves by
@@ -18,7 +18,7 @@ linear in each block, which the discretisation represents exactly):
 provided the interface transmits the shear without slip: `friction stick`,
 or `coulomb` with mu (0.3) above tau/|sigma_yy| = 0.25 (E = 2 G with
 nu = 0, UX = UY/2). Without friction the shear cannot cross the interface
-and the state is far from uniform (an error of 0.84; tests/run.py checks
+and the state is far from uniform (an error of 0.84; the tests (tests/regression) checks
 that this check fails frictionless). tau is what Allrun writes into 0/D for the material set
 (--tau prints it); with -materials stiffUpper sigma_yy = -1.998e4 Pa and
 tau = 4995.005 Pa.
@@ -37,15 +37,15 @@ tangential slip close exactly):
   (3 + 22), 1.2e-8 with -slave upper, 2.7e-8 with coulomb; with
   -materials stiffUpper 2.1e-6 at the outer tolerance 1e-9, 4.0e-8 and
   1.8e-8 (both slaves) at 1e-11: the stiff block turns the residual into
-  stress 1000 times over, so tests/run.py runs those at 1e-11. Also contactReport's forces of that time against the exact ones,
+  stress 1000 times over, so the tests (tests/regression) runs those at 1e-11. Also contactReport's forces of that time against the exact ones,
   |sigma_yy| and tau times the slave area (1 m x dz), to 1e-6.
 For the other methods (a penalty, a law or a barrier in series with the
 column: offsets the tangential law of the method sets) the state must
 still be uniform: max over components of (max - min over the cells) /
 max(|sigma_yy|, |sigma_xy|) <= 1e-6, the offsets printed. Measured (make
-bench, not in tests/run.py): they are not (spread 4.5e-3 penalty, 1.3e-2
+bench, not in the tests (tests/regression)): they are not (spread 4.5e-3 penalty, 1.3e-2
 barrier, 2.4e-2 constitutiveLaw, 4.8e-2 perturbedLagrange), an open
-question (DEVELOPERS.md, "Friction in the implicit interface").
+question (docs/design-notes.md, "Friction in the implicit interface").
 """
 import os
 import sys

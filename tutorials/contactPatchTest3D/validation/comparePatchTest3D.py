@@ -2,7 +2,7 @@
 """contactPatchTest3D: the stress must be uniform and uniaxial across a 3D non-matching interface.
 
 The checks, their tolerances and where the tolerances come from live here,
-once: the tutorial prints them, the regression runner (tests/run.py) reads
+once: the tutorial prints them, the regression tests (tests/, pytest) reads
 them with --json.
 
 Two boxes 1 x 1 x 0.5 m stacked in z (upper 10 x 8 x 5 cells, its bottom

@@ -2,7 +2,7 @@
 """hertzCylinder: compare the contact pressure on the cylinder with Hertz.
 
 The checks, their tolerances and where the tolerances come from live here,
-once: the tutorial prints them, the regression runner (tests/run.py) reads
+once: the tutorial prints them, the regression tests (tests/, pytest) reads
 them with --json.
 
 Data (latest time or --time, reference configuration): contactPressure on the slave

@@ -6,7 +6,7 @@ step of the tutorial (the block's bottom held), t = 2 the block's bottom
 lowered by DELTA/2 (half the approach), t = 3 lowered by 1.1 DELTA (the
 cylinder, its top held at -DELTA, lifts off by 0.1 DELTA). The checks,
 their tolerances and where the tolerances come from live here; the
-tutorial prints them, tests/run.py reads them with --json.
+tutorial prints them, the tests (tests/regression) reads them with --json.
 
 Loaded states (compareHertz.compare at t = 1 and t = 2): frictionless
 elastic contact has no memory, so the half-unloaded state is Hertz's for

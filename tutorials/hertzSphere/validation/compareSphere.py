@@ -2,7 +2,7 @@
 """hertzSphere: compare the contact pressure on the sphere with Hertz.
 
 The checks, their tolerances and where the tolerances come from live here,
-once: the tutorial prints them, the regression runner (tests/run.py) reads
+once: the tutorial prints them, the regression tests (tests/, pytest) reads
 them with --json.
 
 Data (latest time or --time, reference configuration): contactPressure and

@@ -2,7 +2,7 @@
 """plateHole: compare sigma_xx along the symmetry line x = 0 with Kirsch.
 
 The checks, their tolerances and where the tolerances come from live here,
-once: the tutorial prints them, the regression runner (tests/run.py) reads
+once: the tutorial prints them, the regression tests (tests/, pytest) reads
 them with --json.
 
 Tolerance on max |sigma_xx - Kirsch| / (3T) along the line:

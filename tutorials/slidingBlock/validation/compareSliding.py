@@ -2,7 +2,7 @@
 """slidingBlock: in full slip the friction force is mu times the normal force.
 
 The checks, their tolerances and where the tolerances come from live here,
-once: the tutorial prints them, the regression runner (tests/run.py) reads
+once: the tutorial prints them, the regression tests (tests/, pytest) reads
 them with --json.
 
 Data (every written time; the checks at the last one): on the slave patch

@@ -1,5 +1,5 @@
 """What every validation script ends with: one PASS/FAIL line per check,
-the plot, and the checks as JSON for the regression runner (tests/run.py).
+the plot, and the checks as JSON for the regression tests (tests/, pytest).
 
 A check is a dict with name, passed, value, reference, error, tolerance
 (and optionally units)."""

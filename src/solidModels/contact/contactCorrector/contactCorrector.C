@@ -309,12 +309,11 @@ bool Foam::contactCorrector::updateMultipliers
     // than the tolerance since) and the reaction of the last solve
     lastState_.reaction = h.pressure();
 
-    const contactFaceState& ms = h.method().state();
-    if (ms.found("contactMultiplier"))
+    if (const scalarField* lambda = h.method().multipliers())
     {
         multiplierRecord rec;
         rec.update = h.method().nMultiplierUpdates();
-        rec.multiplier = ms["contactMultiplier"];
+        rec.multiplier = *lambda;
         rec.gap = lastState_.gap;
         rec.pressure = h.pressure();
         multiplierHistory_.append(rec);
