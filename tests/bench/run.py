@@ -144,7 +144,9 @@ def timed_solver_dir():
     """A directory with a `solidContactFoam` that runs the real one and
     writes its wall time (time.time() around it) and exit code to
     wall.solidContactFoam in the case: put first on PATH, it times the
-    solver run that a tutorial's Allrun starts, and nothing else."""
+    solver run that a tutorial's Allrun starts, and nothing else (the
+    Allruns also ask the solver for its tables, -listMethods and
+    -listFrictionModels, which are not timed)."""
     d = os.path.join(WORK, "timedSolver")
     os.makedirs(d, exist_ok=True)
     real = shutil.which(SOLVER)
@@ -153,12 +155,14 @@ def timed_solver_dir():
     exe = os.path.join(d, SOLVER)
     with open(exe, "w") as f:
         f.write("#!/usr/bin/python3\n"
-                "import subprocess, sys, time\n"
+                "import os, subprocess, sys, time\n"
+                "if any(a.startswith('-list') for a in sys.argv[1:]):\n"
+                "    os.execv(%r, [%r] + sys.argv[1:])\n"
                 "t0 = time.time()\n"
                 "rc = subprocess.call([%r] + sys.argv[1:])\n"
                 "with open('wall.%s', 'w') as f:\n"
                 "    f.write('%%.6f %%d\\n' %% (time.time() - t0, rc))\n"
-                "sys.exit(rc)\n" % (real, SOLVER))
+                "sys.exit(rc)\n" % (real, real, real, SOLVER))
     os.chmod(exe, 0o755)
     return d
 
