@@ -48,6 +48,11 @@ def worker():
 
 # --------------------------------------------------------------------------
 # Commands and case copies
+def _gap(text):
+    """A smallest gap the solver printed: "none" where no face was in range."""
+    return float("inf") if text == "none" else float(text)
+
+
 def run(cmd, cwd, env=None, log=None):
     p = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE,
                        stderr=subprocess.STDOUT, text=True,
@@ -312,9 +317,9 @@ class Checks:
         that of the state kept; all must be > 0, and there must be one line
         per corrector of the summary (so that none went unchecked)."""
         text = open(os.path.join(case, "log.solidContactFoam")).read()
-        gaps = [float(g) for g in re.findall(r"^\s*contact \w+: corrector \d+ .*minGap = (\S+)",
+        gaps = [_gap(g) for g in re.findall(r"^\s*contact \w+: corrector \d+ .*minGap = (\S+)",
                                              text, flags=re.M)]
-        final = [float(g) for g in re.findall(r"^Time = .*minGap = (\S+)", text, flags=re.M)]
+        final = [_gap(g) for g in re.findall(r"^Time = .*minGap = (\S+)", text, flags=re.M)]
         ncorr = sum(int(n) for n in re.findall(r"^Time = \S+\s+correctors = (\d+)", text,
                                               flags=re.M))
         ok = bool(gaps) and len(gaps) == ncorr and min(gaps + final) > 0

@@ -365,8 +365,15 @@ Foam::scalar Foam::contactCorrector::stepLimit
     {
         Info<< "    contact " << slave.patch().name() << ": step limited to "
             << alpha << " of the update (minGap "
-            << contactReporter::minGap(lastState_.gap, lastState_.inRange)
-            << " -> " << contactReporter::minGap(pair_->gap(), pair_->inRange())
+            << contactReporter::gapText
+               (
+                   contactReporter::minGap(lastState_.gap, lastState_.inRange)
+               ).c_str()
+            << " -> "
+            << contactReporter::gapText
+               (
+                   contactReporter::minGap(pair_->gap(), pair_->inRange())
+               ).c_str()
             << " m)" << endl;
     }
     return alpha;

@@ -70,6 +70,18 @@ Foam::scalar Foam::contactReporter::minGap
 }
 
 
+Foam::string Foam::contactReporter::gapText(const scalar g)
+{
+    if (g >= 0.5*GREAT)
+    {
+        return "none";
+    }
+    OStringStream os;
+    os  << g;
+    return os.str();
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::contactReporter::setFields
@@ -219,7 +231,7 @@ Foam::string Foam::contactReporter::summary() const
     os  << "F_N = " << r.normalForce
         << "  active = " << r.activeFaces
         << "  maxPenetration = " << r.maxPenetration
-        << "  minGap = " << r.minGap
+        << "  minGap = " << gapText(r.minGap).c_str()
         << "  changes = " << r.activeSetChanges;
     const frictionModel& friction = history_.friction();
     if (friction.hasTangentialLaw())
@@ -257,7 +269,7 @@ void Foam::contactReporter::writeCorrectorLine(Ostream& os) const
         << "  changes = " << history_.activeSetChanges()
         << "  F_N = " << corrector_->normalForce()
         << "  max|g| = " << gMax(mag(state.gap))
-        << "  minGap = " << minGap(state.gap, state.inRange)
+        << "  minGap = " << gapText(minGap(state.gap, state.inRange)).c_str()
         << "  masterFaceConstraints = "
         << corrector_->coupling().nConstraintGroups()
         << endl;

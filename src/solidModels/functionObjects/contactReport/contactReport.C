@@ -48,6 +48,16 @@ void Foam::functionObjects::contactReport::findSlaves()
     slavePatches_.transfer(slaves);
     multiplierFiles_.setSize(slavePatches_.size());
     resetNames(names);
+
+    // The column names (logFiles creates the files but leaves the header
+    // to us), so that a reader is told what each column is and its units
+    if (Pstream::master())
+    {
+        forAll(names, i)
+        {
+            writeFileHeader(i);
+        }
+    }
 }
 
 
