@@ -268,6 +268,10 @@ CASES = [
     ("obsoleteCouplingRelaxation", "contactPatchTest",
      [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method lagrangeMultiplier; couplingRelaxation 0.3;")],
      ["FOAM FATAL IO ERROR", "Entry 'couplingRelaxation'", "no longer used", "lowerTop"]),
+    # -1 is the internal "not given": a given -1 is refused like any other
+    ("searchDistanceMinusOne", "contactPatchTest",
+     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method lagrangeMultiplier; searchDistance -1;")],
+     ["FOAM FATAL IO ERROR", "Invalid searchDistance -1", "positive length", "lowerTop"]),
     ("negativeRebuildTolerance", "contactPatchTest",
      [("0/D", r"^(\s*)method\s+lagrangeMultiplier;", r"\1method lagrangeMultiplier; rebuildTolerance -1;")],
      ["FOAM FATAL IO ERROR", "Invalid rebuildTolerance -1", ">= 0", "lowerTop"]),

@@ -90,7 +90,8 @@ void Foam::contactSettings::checkPatch
             << exit(FatalIOError);
     }
 
-    if (searchDistance_ != -1 && !(searchDistance_ > 0))
+    // -1 stands for "not given" inside; a given -1 is as invalid as -2
+    if (dict.found("searchDistance") && !(searchDistance_ > 0))
     {
         FatalIOErrorInFunction(dict)
             << "Invalid searchDistance " << searchDistance_ << " in "
