@@ -34,8 +34,11 @@ Foam::boolList Foam::contactHistory::activeFlags(const scalarField& a)
 
 void Foam::contactHistory::addFields(const bool slave)
 {
-    // Each side writes what its restart needs; the rest follows from it
-    fields_.add("contactTraction", vector::zero, dimPressure, !slave);
+    // Each side writes what its restart needs; the rest follows from it.
+    // The slave's traction too: a restart's first corrector starts from
+    // the last solve's traction (friction's trial, the output field of a
+    // step that converges in that corrector), as a continuing run does
+    fields_.add("contactTraction", vector::zero, dimPressure, true);
     fields_.add("contactPressure", 0, dimPressure, slave);
 }
 
