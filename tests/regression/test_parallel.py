@@ -3,6 +3,10 @@ checked like the serial run (its tutorial's closed form), ran on 2
 processors, and agrees with the serial answer to 1e-6 (both stop at the
 outer correctors' residual 1e-9). Each test shares its xdist group with
 the serial run it compares with."""
+import os
+import re
+import shutil
+
 import pytest
 
 import harness
@@ -139,4 +143,54 @@ def test_cattaneoMindlin_parallel_equals_serial():
         ck.contact_agrees(ref, par["case"], name, 1e-6)
         ck.displacements_agree(ref, par["case"], name + "/D_equals_serial", 1e-6)
         ck.friction_fields_agree(ref, par["case"], name, "cylinderContact", 1e-6)
+    ck.verify()
+
+
+DECOMPOSE_ABOVE_INTERFACE = """FoamFile { version 2.0; format ascii; class dictionary;
+           object decomposeParDict; }
+numberOfSubdomains 2;
+method simple;
+coeffs { n (1 1 2); }
+"""
+
+
+@pytest.mark.xdist_group("contactPatchTest3D_noContactFace")
+def test_processor_without_contact_faces_equals_serial():
+    """contactPatchTest3D cut in z at the middle of the cell count: one
+    processor holds both contact patches, the other no contact face at
+    all (issue 24's crash: the slave point weights were made only where a
+    processor had slave points, and the collective exchange in them
+    mismatched, MPI_ERR_TRUNCATE). Serial = parallel to 1e-8 (measured
+    1.8e-11)."""
+    ck = harness.Checks()
+    name = "contactPatchTest3D_noContactFace"
+    serial = harness.tutorial_run("contactPatchTest3D", name, ["-method", LM])
+    if not ck.run(serial, name):
+        ck.verify()
+    case = serial["case"] + "_parallel"
+
+    def make():
+        shutil.rmtree(case, ignore_errors=True)
+        shutil.copytree(serial["case"], case, ignore=shutil.ignore_patterns(
+            "[1-9]*", "processor*", "log.*", "VTK", "postProcessing", "*.png",
+            "checks.json"))
+        with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+            f.write(DECOMPOSE_ABOVE_INTERFACE)
+        rc, out = harness.run(["decomposePar", "-force"], cwd=case,
+                              log=os.path.join(case, "log.decomposePar"))
+        if rc == 0:
+            rc, out = harness.run(["mpirun", "-np", "2", harness.SOLVER, "-parallel"],
+                                  cwd=case, log=os.path.join(case, "log.solidContactFoam"))
+        if rc == 0:
+            rc, out = harness.run(["reconstructPar", "-latestTime"], cwd=case,
+                                  log=os.path.join(case, "log.reconstructPar"))
+        return rc
+
+    rc = make()
+    counts = re.findall(r"Number of cells = (\d+)",
+                        open(os.path.join(case, "log.decomposePar")).read())
+    ck.add(name + "/parallel_run", rc == 0,
+           note="(cells per processor %s; see %s)" % (", ".join(counts), case))
+    if rc == 0:
+        ck.displacements_agree(serial["case"], case, name + "/D_equals_serial", 1e-8)
     ck.verify()
