@@ -295,20 +295,15 @@ void Foam::contactPatchPair::moveSlave(const vectorField& slaveD)
 
     // A point on a processor boundary takes the faces of every processor
     // around it, so that a decomposed run sees the serial surface. The
-    // weights are made once, by every processor together (syncPointList
-    // is collective): a test on this processor's point count skipped it
-    // where a processor holds no slave face, and the exchange then
+    // weights are made by every processor together (syncPointList is
+    // collective): the test on this processor's point count alone skipped
+    // them where a processor holds no slave face, and the exchange then
     // mismatched (MPI_ERR_TRUNCATE)
     if
     (
-        !returnReduce
-        (
-            slaveWeightsMade_ && slavePointWeights_.size() == pp.nPoints(),
-            andOp<bool>()
-        )
+        returnReduce(slavePointWeights_.size() != pp.nPoints(), orOp<bool>())
     )
     {
-        slaveWeightsMade_ = true;
         slavePointWeights_.setSize(pp.nPoints());
         slavePointWeightSum_.setSize(pp.nPoints());
         const vectorField& Cf = slave_.Cf();
