@@ -28,7 +28,7 @@ import time
 import numpy as np
 import pytest
 
-from c4fpost import contactreport, foamio
+from c4fpost import contactreport, foamio, methods
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
@@ -70,41 +70,6 @@ def fresh_copy(tutorial, name):
                     ignore=shutil.ignore_patterns("[1-9]*", "processor*", "log.*",
                                                   "VTK", "postProcessing", "*.png"))
     return dst
-
-
-def set_coeff(case, entry, value):
-    """Set `entry value;` (first occurrence, anchored at a line) in 0/D."""
-    d = os.path.join(case, "0/D")
-    text, n = re.subn(r"^(\s*%s\s+)[^;\s]+;" % re.escape(entry), r"\g<1>%s;" % value,
-                      open(d).read(), count=1, flags=re.M)
-    if n != 1:
-        raise RuntimeError("no entry %s in %s" % (entry, d))
-    open(d, "w").write(text)
-
-
-def set_method_coeff(case, method, entry, value):
-    """Set `entry value;` of <method>Coeffs in 0/D (the slave's): in the
-    dictionary where the case has one (the entry replaced, or added), else
-    a new dictionary after the `method <name>;` line (the coefficients the
-    case does not give are the class's defaults)."""
-    d = os.path.join(case, "0/D")
-    text = open(d).read()
-    m = re.search(r"^\s*%sCoeffs\s*\{" % re.escape(method), text, flags=re.M)
-    if m:
-        end = text.index("}", m.end())
-        body = text[m.end():end]
-        body, n = re.subn(r"^(\s*%s\s+)[^;\s]+;" % re.escape(entry), r"\g<1>%s;" % value,
-                          body, count=1, flags=re.M)
-        if n == 0:
-            body = " %s %s;%s" % (entry, value, body)
-        text = text[:m.end()] + body + text[end:]
-    else:
-        text, n = re.subn(r"^(\s*method\s+\w+;)",
-                          r"\1 %sCoeffs { %s %s; }" % (method, entry, value),
-                          text, count=1, flags=re.M)
-        if n != 1:
-            raise RuntimeError("no 'method <name>;' in " + d)
-    open(d, "w").write(text)
 
 
 def add_controls(case, controls):
@@ -437,26 +402,13 @@ def restart_run(finished, end_time=None, suffix="_restart"):
 
 # --------------------------------------------------------------------------
 # The contact methods of the solver's selection table and their traits
-def method_table():
-    """name -> c4fpost.methods.Method (answer, open_start, slip,
-    multipliers, coeffs), from solidContactFoam -listMethods."""
-    from c4fpost import methods
-    return methods.table()
-
-
-def method_coeff(case, method, entry):
-    """The case's <method>Coeffs entry of 0/D, else the class default."""
-    from c4fpost import methods
-    return methods.coeff(case, method, entry)
-
-
 def methods_where(**traits):
     """The names of the methods whose traits have these values, e.g.
     methods_where(slip=False), methods_where(answer="exact")."""
-    return [m.name for m in method_table().values()
+    return [m.name for m in methods.table().values()
             if all(getattr(m, k) == v for k, v in traits.items())]
 
 
 def methods_with_coeff(entry):
     """The methods with a default coefficient `entry` (e.g. gamma0)."""
-    return [m.name for m in method_table().values() if entry in m.coeffs]
+    return [m.name for m in methods.table().values() if entry in m.coeffs]

@@ -1,6 +1,7 @@
 """The tutorial runs several tests read (each made once per session by
 harness.tutorial_run; the test that owns a run asserts its own checks)."""
 import harness
+from c4fpost import methods
 
 # The reference of the exact methods: the Lagrange multiplier
 LM = "lagrangeMultiplier"
@@ -12,7 +13,7 @@ PENALTY = "penalty"
 
 
 def is_barrier(method):
-    return harness.method_table()[method].answer == "barrier"
+    return methods.table()[method].answer == "barrier"
 
 
 def verbose_for(method):
@@ -49,7 +50,7 @@ def barrier_kappa_update(method):
     name = "contactPatchTest_%s_kappaUpdate" % method
     return name, harness.tutorial_run(
         "contactPatchTest", name, ["-method", method], controls="verbose yes;",
-        edit=lambda case: harness.set_method_coeff(case, method, "kappaScale", "0.01"))
+        edit=lambda case: methods.set_coeff(case, method, "kappaScale", "0.01"))
 
 
 def steel_aluminium(method):

@@ -126,20 +126,6 @@ def set_solid_mechanics(case, entries):
     open(fvs, "w").write(text[:m.start(1)] + body + text[m.end(1):])
 
 
-def set_penalty_scale(d, method, scale):
-    """penaltyScale of <method>Coeffs in the 0/D at d: the entry set where
-    the case gives it, else `<method>Coeffs { penaltyScale scale; }` added
-    after the slave's method line (the case keeps the class default)."""
-    text, n = re.subn(r"(%sCoeffs\s*\{\s*penaltyScale\s+)[^;]+;" % method,
-                      r"\g<1>%s;" % scale, open(d).read())
-    if n == 0:
-        text, n = re.subn(r"^(\s*)(method\s+\w+;)", r"\g<1>\g<2>\n\g<1>%sCoeffs { penaltyScale %s; }"
-                          % (method, scale), text, count=1, flags=re.M)
-    if n != 1:
-        sys.exit("bench: no %sCoeffs penaltyScale nor method line in %s" % (method, d))
-    open(d, "w").write(text)
-
-
 def timed_solver_dir():
     """A directory with a `solidContactFoam` that runs the real one and
     writes its wall time (time.time() around it) and exit code to
@@ -499,7 +485,7 @@ def uzawa_bench():
     runs = []
     for s in ("0.3", "1", "3"):
         def prepare(case, s=s):
-            set_penalty_scale(os.path.join(case, "0/D"), "augmentedLagrange", s)
+            methods.set_coeff(case, "augmentedLagrange", "penaltyScale", s)
         case = os.path.join(WORK, "uzawaSrc_s" + s)
         shutil.rmtree(case, ignore_errors=True)
         shutil.copytree(os.path.join(ROOT, "tutorials/hertzCylinder"), case,
@@ -553,7 +539,7 @@ def perturbed_bench():
         shutil.copytree(tut, src, ignore=shutil.ignore_patterns(
             "[1-9]*", "processor*", "log.*", "VTK", "postProcessing", "*.png"))
         if scale is not None:
-            set_penalty_scale(os.path.join(src, "0/D"), method, scale)
+            methods.set_coeff(src, method, "penaltyScale", scale)
         r = bench_case(name, src, allrun=("-method", method))
         if not r["converged"]:
             print("  %s did not converge, see %s" % (name, r["case"]))

@@ -13,10 +13,10 @@ import pytest
 
 import harness
 import runs
-from c4fpost import contactreport
+from c4fpost import contactreport, methods
 from harness import methods_where, methods_with_coeff
 
-METHODS = list(harness.method_table())
+METHODS = list(methods.table())
 LM = runs.LM
 # The plain penalty: the penalty answer with no multipliers
 PENALTY = runs.PENALTY
@@ -36,7 +36,7 @@ def test_patch_test_closed_form(method):
     """comparePatchTest's checks for the method's answer; the barrier also
     keeps every gap open."""
     ck = harness.Checks()
-    answer = harness.method_table()[method].answer
+    answer = methods.table()[method].answer
     if answer not in ANSWERS:
         ck.add("contactPatchTest_%s/closed_form_check" % method, False,
                note="method %s answers '%s' (solidContactFoam -listMethods), which the patch"
@@ -78,8 +78,8 @@ def test_linear_interface_law_equals_penalty(method):
     name = "contactPatchTest_%s_n1" % method
 
     def linear_law(case):
-        harness.set_method_coeff(case, method, "cN", "1e8")
-        harness.set_method_coeff(case, method, "n", "1")
+        methods.set_coeff(case, method, "cN", "1e8")
+        methods.set_coeff(case, method, "n", "1")
     r = harness.tutorial_run("contactPatchTest", name, ["-method", method], edit=linear_law)
     if ck.run(r, name):
         ck.stress_fields_agree(harness.need(patch(PENALTY)), r["case"],
@@ -96,7 +96,7 @@ def test_regularised_multiplier_equals_penalty(method):
     the multiplier tolerance's remainder)."""
     ck = harness.Checks()
     case, ref = harness.need(patch(method)), harness.need(patch(PENALTY))
-    scales = [harness.method_coeff(c, m, "penaltyScale") for c, m in ((case, method),
+    scales = [methods.coeff(c, m, "penaltyScale") for c, m in ((case, method),
                                                                       (ref, PENALTY))]
     assert scales[0] == scales[1], "penaltyScale of %s %g, of %s %g: not the same eps" % (
         method, scales[0], PENALTY, scales[1])
@@ -125,7 +125,7 @@ def test_consistent_method_exact_for_any_gamma0(method, gamma0):
     ck = harness.Checks()
     name = "contactPatchTest_%s_gamma0_%s" % (method, gamma0)
     ck.run(harness.tutorial_run("contactPatchTest", name, ["-method", method],
-                                edit=lambda case: harness.set_method_coeff(case, method, "gamma0",
+                                edit=lambda case: methods.set_coeff(case, method, "gamma0",
                                                                            gamma0)),
            name)
     ck.verify()

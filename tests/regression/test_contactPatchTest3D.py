@@ -7,6 +7,7 @@ and every corrector's gaps stay open."""
 import pytest
 
 import harness
+from c4fpost import methods
 import runs
 
 VARIANTS = ([], ["-rotate"], ["-nu", "0.3"], ["-rotate", "-nu", "0.3"])
@@ -17,7 +18,7 @@ def variant_id(opts):
 
 
 @pytest.mark.parametrize("opts", VARIANTS, ids=variant_id)
-@pytest.mark.parametrize("method", list(harness.method_table()))
+@pytest.mark.parametrize("method", list(methods.table()))
 def test_patch_test_3D_closed_form(method, opts):
     ck = harness.Checks()
     tag = "".join(o.lstrip("-").replace(".", "") for o in opts)

@@ -6,6 +6,7 @@ coarse slave. The decomposed runs are in test_parallel.py."""
 import pytest
 
 import harness
+from c4fpost import methods
 import runs
 from harness import methods_with_coeff
 
@@ -69,7 +70,7 @@ def test_nearRigid_stiffness_weights(method):
     ck.run(harness.tutorial_run("hertzCylinder", name,
                                 ["-method", method, "-materials", "nearRigidCylinder",
                                  "-slave", "block"],
-                                edit=lambda case: harness.set_method_coeff(case, method, "weights",
+                                edit=lambda case: methods.set_coeff(case, method, "weights",
                                                                            "stiffness")),
            name)
     ck.verify()

@@ -20,6 +20,7 @@ import re
 import pytest
 
 import harness
+from c4fpost import methods
 import runs
 from harness import methods_where
 
@@ -28,7 +29,7 @@ LM = runs.LM
 # and the plain penalty (a method named here but not in -listMethods is
 # left out)
 CATTANEO = [m for m in (LM, "augmentedLagrange", runs.PENALTY)
-            if m in harness.method_table()]
+            if m in methods.table()]
 # The friction models issue 10 requires of -listFrictionModels
 REQUIRED_MODELS = ("frictionless", "stick", "coulomb")
 # The shear patch test with the Lagrange multiplier and each friction model

@@ -11,10 +11,11 @@ import numpy as np
 import pytest
 
 import harness
+from c4fpost import methods
 import runs
 from harness import methods_where, methods_with_coeff
 
-METHODS = list(harness.method_table())
+METHODS = list(methods.table())
 LM = runs.LM
 # The plain penalty: the penalty answer with no multipliers
 PENALTY = runs.PENALTY
@@ -31,7 +32,7 @@ def test_hertz_pressure_and_half_width(method):
     ck = harness.Checks()
     r = hertz(method)
     name = "hertzCylinder_" + method
-    if ck.run(r, name) and harness.method_table()[method].answer == "barrier":
+    if ck.run(r, name) and methods.table()[method].answer == "barrier":
         ck.barrier_gaps_open(r["case"], name)
     ck.verify()
 
@@ -44,7 +45,7 @@ def test_regularised_multiplier_equals_penalty(method):
     penalty run's force and peak pressure (measured 4e-10 and 1.6e-8)."""
     ck = harness.Checks()
     case, ref = harness.need(hertz(method)), harness.need(hertz(PENALTY))
-    scales = [harness.method_coeff(c, m, "penaltyScale") for c, m in ((case, method),
+    scales = [methods.coeff(c, m, "penaltyScale") for c, m in ((case, method),
                                                                       (ref, PENALTY))]
     assert scales[0] == scales[1], "penaltyScale of %s %g, of %s %g: not the same eps" % (
         method, scales[0], PENALTY, scales[1])

@@ -10,6 +10,7 @@ import shutil
 import pytest
 
 import harness
+from c4fpost import methods
 import runs
 from harness import methods_where, methods_with_coeff
 
@@ -56,7 +57,7 @@ PARALLEL = [LM] + methods_with_coeff("gamma0") + ["augmentedLagrange"] \
 
 
 @pytest.mark.parametrize("method", [pytest.param(m, marks=pytest.mark.xdist_group(
-    "hertzCylinder_" + m)) for m in PARALLEL if m in harness.method_table()])
+    "hertzCylinder_" + m)) for m in PARALLEL if m in methods.table()])
 def test_hertzCylinder_parallel_equals_serial(method):
     hertz_parallel_checks(method)
 

@@ -21,6 +21,7 @@ of them keeps a list of its own, so a new method is picked up by all.
 """
 import functools
 import os
+import re
 import subprocess
 from collections import namedtuple
 
@@ -100,3 +101,29 @@ def coeff(case, method, entry):
         raise KeyError("%s has no entry %s in %s/0/D and no default"
                        % (method, entry, case))
     return float(defaults[entry])
+
+
+def set_coeff(case, method, entry, value):
+    """Set `entry value;` of <method>Coeffs in the case's 0/D (the
+    slave's; the writing twin of coeff): in the dictionary where the case
+    has one (the entry replaced, or added), else a new dictionary after the
+    `method <name>;` line (the coefficients the case does not give are the
+    class's defaults)."""
+    d = os.path.join(case, "0/D")
+    text = open(d).read()
+    m = re.search(r"^\s*%sCoeffs\s*\{" % re.escape(method), text, flags=re.M)
+    if m:
+        end = text.index("}", m.end())
+        body = text[m.end():end]
+        body, n = re.subn(r"^(\s*%s\s+)[^;\s]+;" % re.escape(entry), r"\g<1>%s;" % value,
+                          body, count=1, flags=re.M)
+        if n == 0:
+            body = " %s %s;%s" % (entry, value, body)
+        text = text[:m.end()] + body + text[end:]
+    else:
+        text, n = re.subn(r"^(\s*method\s+\w+;)",
+                          r"\1 %sCoeffs { %s %s; }" % (method, entry, value),
+                          text, count=1, flags=re.M)
+        if n != 1:
+            raise RuntimeError("no 'method <name>;' in " + d)
+    open(d, "w").write(text)

@@ -48,12 +48,6 @@ def method_check(method):
     return dict(kind=answer)
 
 
-def method_coeff(case, method, entry):
-    """A scalar coefficient of `method` in `case`: its <method>Coeffs entry
-    of 0/D, else the class's default (c4fpost.methods.coeff)."""
-    return methods.coeff(case, method, entry)
-
-
 def constitutive_stress(modulus, delta, length, cN, n):
     """|sigma| of a column (modulus, length) shortened by delta with the
     interface law p = cN (-g)^n in series:
@@ -212,7 +206,7 @@ class PatchTest:
         the outer correctors' residual). Adds predicted, offset, cN, n,
         maxRel, penetration and penetrationRef to res; returns (checks,
         predicted stress, tolerance of the contact force)."""
-        cN, n = method_coeff(case, method, "cN"), method_coeff(case, method, "n")
+        cN, n = methods.coeff(case, method, "cN"), methods.coeff(case, method, "n")
         predicted = -constitutive_stress(modulus, self.delta, self.length, cN, n)
         maxRel, spread = uniformity(stress, predicted)
         gap = foamio.read_patch(os.path.join(case, time, "contactGap"), self.slave, nfaces)
@@ -248,9 +242,9 @@ class PatchTest:
         returns (checks, predicted stress, tolerance of the contact
         force)."""
         try:
-            dhat = method_coeff(case, method, "dhat")
+            dhat = methods.coeff(case, method, "dhat")
         except (KeyError, AttributeError, TypeError, ValueError):
-            dhat = method_coeff(case, method, "dhatScale") * float(np.max(h))
+            dhat = methods.coeff(case, method, "dhatScale") * float(np.max(h))
         kappa = np.asarray(foamio.read_patch(os.path.join(case, time, "barrierStiffness"),
                                              self.slave, nfaces))
         # kappa = s K/h: uniform up to the round-off of h = V/A, about 1e-11
