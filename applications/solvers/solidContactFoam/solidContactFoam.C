@@ -122,6 +122,7 @@ Usage
 #include "frictionModel.H"
 #include "contactFvMesh.H"
 #include "outerCorrectorAcceleration.H"
+#include "solidMeshQuality.H"
 
 int main(int argc, char *argv[])
 {

@@ -62,3 +62,36 @@ Foam::solidPatchTractions::explicitNormalTraction(const fvPatch& patch)
     const vectorField n(patch.nf());
     return (n & sigma) - impK(patch)*(n & gradD);
 }
+
+
+Foam::tmp<Foam::vectorField>
+Foam::solidPatchTractions::faceCorrection(const fvPatch& patch)
+{
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+    if (!mesh.foundObject<volTensorField>("gradD"))
+    {
+        return tmp<vectorField>(new vectorField(patch.size(), Zero));
+    }
+    const volTensorField& gradD = mesh.lookupObject<volTensorField>("gradD");
+
+    // fvPatch::delta() is the normal part (n.d) n of d in v1912
+    const vectorField k
+    (
+        patch.Cf() - patch.Cn() - patch.delta()
+    );
+    return k & tensorField(gradD.primitiveField(), patch.faceCells());
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::solidPatchTractions::faceValues
+(
+    const fvPatchField<vector>& D,
+    const vectorField& snGrad
+)
+{
+    return
+        D.patchInternalField()
+      + faceCorrection(D.patch())
+      + snGrad/D.patch().deltaCoeffs();
+}

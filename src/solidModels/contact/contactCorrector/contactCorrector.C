@@ -219,9 +219,11 @@ void Foam::contactCorrector::correct
     in.slaveK = lastState_.K;
     in.slaveDelta = lastState_.delta;
     in.slaveC = h.explicitTraction();
+    in.slaveFaceCorrection = solidPatchTractions::faceCorrection(slave.patch());
     pair_->gatherMasterData
     (
-        in.masterK, in.masterDelta, in.masterC, in.masterMagSf
+        in.masterK, in.masterDelta, in.masterC, in.masterFaceCorrection,
+        in.masterMagSf
     );
     in.slaveDf = Df;
     in.masterDf = pair_->masterFaceDisplacement();

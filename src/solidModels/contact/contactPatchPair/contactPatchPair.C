@@ -646,11 +646,14 @@ void Foam::contactPatchPair::gatherMasterData
     scalarField& K,
     scalarField& delta,
     vectorField& C,
+    vectorField& faceCorrection,
     scalarField& magSf
 ) const
 {
     K = gatherMaster(solidPatchTractions::impK(master_)());
     delta = gatherMaster(scalarField(1.0/master_.deltaCoeffs()));
     C = gatherMaster(solidPatchTractions::explicitNormalTraction(master_)());
+    faceCorrection =
+        gatherMaster(solidPatchTractions::faceCorrection(master_)());
     magSf = gatherMaster(master_.magSf());
 }

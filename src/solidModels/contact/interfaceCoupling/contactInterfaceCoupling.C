@@ -127,7 +127,13 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                 // The normal law's offset, and the explicit tractions; a
                 // face that is not tied keeps their part along n
                 const scalar bN = -gRef + in.compliance[i]*in.pressure0[i];
-                const vector bC(rs*in.slaveC[i] - rm*in.masterC[j]);
+                vector bC(rs*in.slaveC[i] - rm*in.masterC[j]);
+                if (in.slaveFaceCorrection.size())
+                {
+                    bC +=
+                        in.masterFaceCorrection[j]
+                      - in.slaveFaceCorrection[i];
+                }
                 if (tied_[i])
                 {
                     // The vector gap G = gRef n - (I - n n) R_i + (D_fi -
