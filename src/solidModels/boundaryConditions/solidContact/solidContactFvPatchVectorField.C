@@ -113,9 +113,11 @@ void Foam::solidContactFvPatchVectorField::updateFromCells()
     }
 
     // The face values follow from the cells and the gradient (before the
-    // first contact update: the gradient read or initialised), with the
-    // non-orthogonal part of a cell that leans against the face
-    Field<vector>::operator=(solidPatchTractions::faceValues(*this, gradient()));
+    // first contact update: the gradient read or initialised)
+    Field<vector>::operator=
+    (
+        patchInternalField() + gradient()/patch().deltaCoeffs()
+    );
 }
 
 

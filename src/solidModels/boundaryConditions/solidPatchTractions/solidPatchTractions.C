@@ -75,23 +75,6 @@ Foam::solidPatchTractions::faceCorrection(const fvPatch& patch)
     const volTensorField& gradD = mesh.lookupObject<volTensorField>("gradD");
 
     // fvPatch::delta() is the normal part (n.d) n of d in v1912
-    const vectorField k
-    (
-        patch.Cf() - patch.Cn() - patch.delta()
-    );
+    const vectorField k(patch.Cf() - patch.Cn() - patch.delta());
     return k & tensorField(gradD.primitiveField(), patch.faceCells());
-}
-
-
-Foam::tmp<Foam::vectorField>
-Foam::solidPatchTractions::faceValues
-(
-    const fvPatchField<vector>& D,
-    const vectorField& snGrad
-)
-{
-    return
-        D.patchInternalField()
-      + faceCorrection(D.patch())
-      + snGrad/D.patch().deltaCoeffs();
 }

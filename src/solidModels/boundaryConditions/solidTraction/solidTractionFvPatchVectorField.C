@@ -17,8 +17,7 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
 :
     fixedGradientFvPatchVectorField(p, iF),
     traction_(),
-    pressure_(),
-    nonOrthogonalCorrection_(false)
+    pressure_()
 {
     gradient() = Zero;
 }
@@ -38,10 +37,6 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
         dict.found("pressure")
       ? PatchFunction1<scalar>::New(p.patch(), "pressure", dict)
       : autoPtr<PatchFunction1<scalar>>()
-    ),
-    nonOrthogonalCorrection_
-    (
-        dict.lookupOrDefault<Switch>("nonOrthogonalCorrection", false)
     )
 {
     if (dict.found("value"))
@@ -75,8 +70,7 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
     pressure_
     (
         ptf.pressure_.valid() ? ptf.pressure_->clone(p.patch()).ptr() : nullptr
-    ),
-    nonOrthogonalCorrection_(ptf.nonOrthogonalCorrection_)
+    )
 {
     // A field-valued traction comes with the old patch's faces
     traction_->autoMap(mapper);
@@ -99,8 +93,7 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
         ptf.pressure_.valid()
       ? ptf.pressure_->clone(patch().patch()).ptr()
       : nullptr
-    ),
-    nonOrthogonalCorrection_(ptf.nonOrthogonalCorrection_)
+    )
 {}
 
 
@@ -117,8 +110,7 @@ Foam::solidTractionFvPatchVectorField::solidTractionFvPatchVectorField
         ptf.pressure_.valid()
       ? ptf.pressure_->clone(patch().patch()).ptr()
       : nullptr
-    ),
-    nonOrthogonalCorrection_(ptf.nonOrthogonalCorrection_)
+    )
 {}
 
 
@@ -204,28 +196,6 @@ void Foam::solidTractionFvPatchVectorField::updateCoeffs()
 }
 
 
-void Foam::solidTractionFvPatchVectorField::evaluate
-(
-    const Pstream::commsTypes commsType
-)
-{
-    if (!nonOrthogonalCorrection_)
-    {
-        fixedGradientFvPatchVectorField::evaluate(commsType);
-        return;
-    }
-    if (!updated())
-    {
-        updateCoeffs();
-    }
-    Field<vector>::operator=
-    (
-        solidPatchTractions::faceValues(*this, gradient())
-    );
-    fvPatchVectorField::evaluate(commsType);
-}
-
-
 void Foam::solidTractionFvPatchVectorField::write(Ostream& os) const
 {
     fvPatchVectorField::write(os);
@@ -233,10 +203,6 @@ void Foam::solidTractionFvPatchVectorField::write(Ostream& os) const
     if (pressure_.valid())
     {
         pressure_->writeData(os);
-    }
-    if (nonOrthogonalCorrection_)
-    {
-        os.writeEntry("nonOrthogonalCorrection", Switch(true));
     }
     gradient().writeEntry("gradient", os);
     writeEntry("value", os);

@@ -21,6 +21,14 @@ Foam::tmp<Foam::scalarField> cellSizeNormal(const Foam::fvPatch& patch)
        /patch.magSf();
 }
 
+//- The displacement at the face centres: the patch values (the two-point
+//  values at the foot of the normal from the cell centre) with the
+//  non-orthogonal part of a leaning cell (solidPatchTractions.H)
+Foam::tmp<Foam::vectorField> centreDisplacement(const Foam::fvPatchVectorField& D)
+{
+    return D + Foam::solidPatchTractions::faceCorrection(D.patch());
+}
+
 } // End anonymous namespace
 
 
@@ -101,7 +109,11 @@ Foam::contactSlaveState Foam::contactCorrector::state
     // Frictionless faces need no tangential kinematics (a transfer less)
     if (h.friction().hasTangentialLaw())
     {
-        s.relative = pair_->relativeDisplacement(slave, stickCorrection);
+        s.relative =
+            pair_->relativeDisplacement
+            (
+                centreDisplacement(slave), stickCorrection
+            );
     }
     s.inRange = pair_->inRange();
     s.stiffness = s.K/s.h;
@@ -178,8 +190,8 @@ void Foam::contactCorrector::correct
     }
 
     // 1. Both surfaces in the current configuration, and the projection
-    const vectorField Df(slave);
-    pair_->update(master, Df);
+    const vectorField Df(centreDisplacement(slave));
+    pair_->update(centreDisplacement(master), Df);
 
     // 2. The reaction of the current state, from its face values and
     // gradient: the last solve's pressure, or the pressure of the state
@@ -354,8 +366,8 @@ Foam::scalar Foam::contactCorrector::stepLimit
 
     // The gaps at the current D (the update's), by the same search as a
     // corrector's; lastState_ holds those the corrector started from
-    const vectorField Df(slave);
-    pair_->update(master, Df);
+    const vectorField Df(centreDisplacement(slave));
+    pair_->update(centreDisplacement(master), Df);
 
     const scalar alpha = returnReduce
     (

@@ -3,9 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "outerCorrectorAcceleration.H"
-#include "solidPatchTractions.H"
-#include "solidContactFvPatchVectorField.H"
-#include "solidTractionFvPatchVectorField.H"
 #include "processorSum.H"
 #include "Enum.H"
 #include "fixedGradientFvPatchFields.H"
@@ -106,31 +103,11 @@ void Foam::outerCorrectorAcceleration::scatter(const std::vector<double>& x)
             {
                 // The gradient is the condition's state between correctors
                 // (grad D takes its boundary normal part from it): it goes
-                // with the face value, or the previous iterate's would stay.
-                // A corrected face value holds the non-orthogonal part of a
-                // leaning cell too (solidPatchTractions::faceValues), at
-                // the current cell gradient; left in, it would count as
-                // normal gradient and the traction would be off by
-                // K k.grad(D)_P/(n.d) at the fixed point
+                // with the face value, or the previous iterate's would stay
                 fixedGradientFvPatchVectorField& fg =
                     refCast<fixedGradientFvPatchVectorField>(pf);
-                const bool corrected =
-                    isA<solidContactFvPatchVectorField>(pf)
-                 || (
-                        isA<solidTractionFvPatchVectorField>(pf)
-                     && refCast<const solidTractionFvPatchVectorField>
-                        (
-                            pf
-                        ).nonOrthogonalCorrection()
-                    );
                 fg.gradient() =
                     (v - fg.patchInternalField())*fg.patch().deltaCoeffs();
-                if (corrected)
-                {
-                    fg.gradient() -=
-                        solidPatchTractions::faceCorrection(fg.patch())
-                       *fg.patch().deltaCoeffs();
-                }
             }
             pf == v;
         }
