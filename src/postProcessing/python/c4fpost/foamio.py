@@ -255,7 +255,9 @@ def cell_centres_volumes(case):
     owner = read_labels(case, "owner")
     neigh = read_labels(case, "neighbour")
     nf = len(faces)
-    ncells = owner.max() + 1
+    # the largest label of either list: a mesh's last cell may own no face
+    # (gmshToFoam's meshes)
+    ncells = max(owner.max(), neigh.max() if neigh.size else -1) + 1
     Cf = np.empty((nf, 3))
     Sf = np.empty((nf, 3))
     for i, f in enumerate(faces):

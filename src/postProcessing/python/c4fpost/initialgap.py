@@ -43,8 +43,11 @@ def zone_cells(case, zone):
 
 
 def ncells(case):
-    """Number of cells: one more than the largest owner label."""
-    return int(foamio.read_owner(case).max()) + 1
+    """Number of cells: one more than the largest owner or neighbour label
+    (a mesh's last cell may own no face: gmshToFoam's meshes)."""
+    n = int(foamio.read_owner(case).max()) + 1
+    neighbour = foamio.read_labels(case, "neighbour")
+    return max(n, int(neighbour.max()) + 1 if neighbour.size else 0)
 
 
 def _set_patch_value(text, patch, value, add=True):
