@@ -62,6 +62,7 @@ friction.md, q's RMS against the faces across a in friction.png.
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
+import importlib
 import os
 import re
 import shutil
@@ -977,11 +978,62 @@ def friction_chart(rows, png):
     print("plot: %s" % png)
 
 
+# --------------------------------------------------------------------------
+# The meshes users bring (issue 21): gmsh prisms with a skewed slave strip
+# and tetrahedra, at several levels (-refine), each against its closed form
+# and, for the correctors, against the same mesh without contact (the
+# converged tractions applied: c4fpost.contactfree)
+UNSTRUCTURED = (
+    ("hertzCylinderPrisms", ("-skew", "yes"), (1, 2, 4), "blockContact", "cylinderContact"),
+    ("hertzCylinderPrisms", ("-skew", "alternate"), (1, 2, 4), "blockContact",
+     "cylinderContact"),
+    ("hertzSphereTets", (), (1, 1.5, 2), "sphereContact", "blockContact"),
+)
+
+
+def unstructured_bench():
+    """Pressure against Hertz on gmsh meshes over mesh levels: the peak face
+    against Hertz at that face, the RMS inside the contact (fractions of
+    p0), correctors and solver wall time with contact and on the same mesh
+    without it."""
+    print("\n== The meshes users bring: Hertz on gmsh prisms and tetrahedra "
+          "(lagrangeMultiplier)")
+    print("%-20s %-10s %6s %8s %9s %9s %7s %7s %8s %8s" % (
+        "tutorial", "variant", "level", "cells", "peak err", "RMS/p0", "corr",
+        "free", "wall s", "free s"))
+    for tutorial, opts, levels, slave, master in UNSTRUCTURED:
+        sys.path.insert(0, os.path.join(ROOT, "tutorials", tutorial, "validation"))
+        module = importlib.import_module(
+            "comparePrisms" if tutorial == "hertzCylinderPrisms" else "compareSphereTets")
+        for level in levels:
+            name = "%s_%s_%s" % (tutorial, "".join(o.strip("-") for o in opts), level)
+            r = bench_case(name, os.path.join(ROOT, "tutorials", tutorial),
+                           allrun=["-refine", str(level)] + list(opts))
+            if not r["converged"]:
+                print("%-20s %-10s %6s  did not converge (rc=%d)" % (
+                    tutorial, " ".join(opts[1:]), level, r["rc"]))
+                continue
+            res = module.compare(r["case"])
+            pk = res["checks"][0]
+            peak = (pk["value"] - pk["reference"]) / pk["reference"]
+            time_ = foamio.latest_time(r["case"])
+            free = bench_case(name + "_free", r["case"], prepare=lambda c, t=time_: (
+                contactfree.make_contact_free(c, t, slave, master)))
+            cells = len(foamio.cell_centres_volumes(r["case"])[1])
+            print("%-20s %-10s %6s %8d %+8.2f%% %8.2f%% %7d %7s %8.1f %8s" % (
+                tutorial, " ".join(opts[1:]) or "-", level, cells,
+                100 * peak,
+                100 * res["rms"], r["ncorr"],
+                free["ncorr"] if free["converged"] else "no", r["wall"],
+                "%.1f" % free["wall"] if free["converged"] else "-"))
+
+
 def main():
     import argparse
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa",
-                                       "perturbedLagrange", "methods", "friction"),
+                                       "perturbedLagrange", "methods", "friction",
+                                       "unstructured"),
                     help="run one part only (convergence includes hertz's runs)")
     args = ap.parse_args()
     t0 = time.time()
@@ -1000,6 +1052,8 @@ def main():
         methods_bench()
     if args.only in (None, "friction"):
         friction_bench()
+    if args.only in (None, "unstructured"):
+        unstructured_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 
