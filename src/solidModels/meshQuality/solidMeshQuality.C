@@ -88,7 +88,7 @@ void Foam::solidMeshQuality::report
             continue;
         }
         Info<< "    contact patch " << p.name() << ": max "
-            << maxPatch_[patchi] << " deg (face values corrected)" << endl;
+            << maxPatch_[patchi] << " deg (gap at the face centres: corrected)" << endl;
         if (maxPatch_[patchi] > maxContactNonOrthogonality)
         {
             WarningInFunction

@@ -31,8 +31,10 @@ on hertzSphere's mesh) and their mean edge length are printed.
 
 Checks (the targets for tetrahedra with about 10 slave faces across a;
 hertzSphere's hexahedra at a/h = 10 give 2.8 % and 1.5 %):
-  - peak pressure: max_f p_f against Hertz p(r) at the centre of that face.
-    Tolerance P0_TOL = 4 % of the Hertz value (compareSphere.py's).
+  - peak pressure: max_f p_f against Hertz's p0 at the measured load
+    (issue 21's measure: a tet face's centre is seldom on the axis, so the
+    peak face is compared with the peak, not with p(r) at its centre,
+    which the printout gives as well). Tolerance P0_TOL = 4 % of p0.
   - pressure inside the contact: the RMS over the faces with r < 0.8 a of
     p_f - p_Hertz(r_f), over p0 (beyond 0.8 a the pressure's slope grows
     without bound and a face value cannot follow it). Tolerance RMS_TOL =
@@ -53,7 +55,7 @@ NAME = "hertzSphereTets"
 R = 1.0                   # sphere radius [m], hertzSphereTets.geo
 SLAVE = "sphereContact"
 SYMMETRY = 4.0            # the quarter model
-P0_TOL = 0.04             # fraction of the Hertz pressure at the peak face
+P0_TOL = 0.04             # fraction of p0
 RMS_TOL = 0.03            # fraction of p0, faces with r < RMS_SPAN a
 RMS_SPAN = 0.8
 
@@ -129,9 +131,9 @@ def compare(case, time=None):
         pass
 
     checks = [
-        dict(name=NAME + "/peak_pressure", value=float(p[iMax]), reference=p0Ref,
-             error=abs(float(p[iMax]) - p0Ref) / p0Ref, tolerance=P0_TOL,
-             units="Pa (error: fraction of Hertz at the peak face)"),
+        dict(name=NAME + "/peak_pressure", value=float(p[iMax]), reference=p0H,
+             error=abs(float(p[iMax]) - p0H) / p0H, tolerance=P0_TOL,
+             units="Pa (error: fraction of p0)"),
         dict(name=NAME + "/pressure_rms", value=rms, reference=0.0, error=rms,
              tolerance=RMS_TOL, units="fraction of p0, r < %.1f a" % RMS_SPAN),
     ]
