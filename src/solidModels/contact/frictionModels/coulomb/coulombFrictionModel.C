@@ -72,6 +72,11 @@ void Foam::frictionModels::coulomb::correct
             updateSlip(state, cond, facei);
             continue;
         }
+        if (closing(facei, cond))
+        {
+            freeClosing(facei, cond);
+            continue;
+        }
 
         const vector& n = state.normal[facei];
         const c4f::contact::CoulombResult r = c4f::contact::coulombReturnMap

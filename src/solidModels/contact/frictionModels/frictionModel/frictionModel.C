@@ -107,6 +107,17 @@ void Foam::frictionModel::updateSlip
 }
 
 
+void Foam::frictionModel::freeClosing
+(
+    const label facei,
+    contactSlaveCondition& cond
+)
+{
+    setStick(facei, 0, cond);
+    state_.field<vector>("contactSlip")[facei] = slipAtStepStart_[facei];
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::frictionModel::frictionModel
@@ -119,6 +130,7 @@ Foam::frictionModel::frictionModel
     coeffs_(coeffs),
     state_(patch.size()),
     slipAtStepStart_(patch.size(), Zero),
+    closedAtStart_(),
     multipliersConverged_(true)
 {}
 
@@ -143,8 +155,13 @@ void Foam::frictionModel::beginStep
     // last corrector); the stick point of a slipping face moves by it
     multipliersConverged_ = true;
     slipAtStepStart_ = state_.field<vector>("contactSlip");
+    closedAtStart_.setSize(stick.size());
     forAll(stick, facei)
     {
+        closedAtStart_[facei] =
+            stick[facei] >= 0
+         || state.gap[facei] <= touchTolerance_*state.h[facei];
+
         if (stick[facei] < 0)
         {
             R[facei] = state.relative[facei];

@@ -45,6 +45,11 @@ void Foam::frictionModels::stick::correct
     releaseAll(cond);
     forAll(cond.tied, facei)
     {
+        if (closing(facei, cond))
+        {
+            freeClosing(facei, cond);
+            continue;
+        }
         if (cond.coupled[facei])
         {
             tie(facei, cond);
