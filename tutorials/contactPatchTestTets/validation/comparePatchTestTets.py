@@ -138,6 +138,14 @@ def compare(case):
     C, V = foamio.cell_centres_volumes(case)
     Cr = C @ R
     Cf, area, slaveCells, h = TEST.slave_geometry(case, V)
+    # cellSize patch (the slave's entry): one h, sum V / sum A, on every
+    # face, as the solver takes it (contactSettings)
+    try:
+        cellSize = foamio.read_entry(os.path.join(case, "0", "D"), "cellSize")
+    except (KeyError, OSError):
+        cellSize = "face"
+    if cellSize == "patch":
+        h = np.full_like(h, float(np.sum(h * area) / np.sum(area)))
     S = patchtest.stress_tensor(case, time, V.size)
     Sr = np.einsum("ki,nkl,lj->nij", R, S, R)
     szz = Sr[:, 2, 2]

@@ -93,6 +93,7 @@ Foam::contactSlaveState Foam::contactCorrector::state
 (
     const fixedGradientFvPatchVectorField& slave,
     const contactHistory& h,
+    const bool patchCellSize,
     List<List<vector>>& stickCorrection
 ) const
 {
@@ -103,6 +104,14 @@ Foam::contactSlaveState Foam::contactCorrector::state
     s.normal = pair_->normal();
     s.K = solidPatchTractions::impK(patch);
     s.h = cellSizeNormal(patch);
+    if (patchCellSize)
+    {
+        const fvMesh& mesh = patch.boundaryMesh().mesh();
+        const scalar V =
+            gSum(scalarField(mesh.V().field(), patch.faceCells()));
+        const scalar A = gSum(patch.magSf());
+        s.h = A > 0 ? V/A : 0;
+    }
     s.delta = 1.0/patch.deltaCoeffs();
     s.reaction = h.pressure();
     s.traction = h.traction();
@@ -208,7 +217,7 @@ void Foam::contactCorrector::correct
 
     // 3. The state
     List<List<vector>> stickCorrection;
-    lastState_ = state(slave, h, stickCorrection);
+    lastState_ = state(slave, h, settings.patchCellSize(), stickCorrection);
 
     // 4. The method's decision, then the friction model's on the faces the
     // method coupled; a new load step first commits the friction history

@@ -64,6 +64,15 @@ void Foam::contactSettings::checkPatch
             << " much stiffer)" << exit(FatalIOError);
     }
 
+    if (cellSize_ != "face" && cellSize_ != "patch")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Invalid cellSize " << cellSize_ << " in " << dict.name()
+            << ": valid are face (h = V/A of each slave face's cell) and"
+            << " patch (h = sum V / sum A over the slave patch)"
+            << exit(FatalIOError);
+    }
+
     if (!(rebuildTolerance_ >= 0))
     {
         FatalIOErrorInFunction(dict)
@@ -168,7 +177,8 @@ Foam::contactSettings::contactSettings()
     searchDistance_(-1),
     normals_("faces"),
     rebuildTolerance_(0),
-    constraintFaces_("auto")
+    constraintFaces_("auto"),
+    cellSize_("face")
 {}
 
 
@@ -185,7 +195,8 @@ Foam::contactSettings::contactSettings
     searchDistance_(dict.getOrDefault<scalar>("searchDistance", -1)),
     normals_(dict.getOrDefault<word>("normals", "faces")),
     rebuildTolerance_(dict.getOrDefault<scalar>("rebuildTolerance", 0)),
-    constraintFaces_(dict.getOrDefault<word>("constraintFaces", "auto"))
+    constraintFaces_(dict.getOrDefault<word>("constraintFaces", "auto")),
+    cellSize_(dict.getOrDefault<word>("cellSize", "face"))
 {
     // The relaxed target these entries controlled no longer exists: the
     // interface is implicit in the D matrix
@@ -232,6 +243,7 @@ void Foam::contactSettings::writeSlave(Ostream& os) const
     os.writeEntry("normals", normals_);
     os.writeEntry("rebuildTolerance", rebuildTolerance_);
     os.writeEntry("constraintFaces", constraintFaces_);
+    os.writeEntry("cellSize", cellSize_);
     if (dict_.found("searchDistance"))
     {
         os.writeEntry("searchDistance", searchDistance_);
