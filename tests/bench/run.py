@@ -863,6 +863,23 @@ def friction_bench():
               " Wall: the solver alone."]
     for m in FRICTION_CATTANEO_METHODS:
         rr = [x for x in cm if x["method"] == m and "rms" in x]
+        if len(rr) >= 3:
+            # Against the finest level's own q (interpolated at the coarser
+            # faces): whether the solution converges, apart from what the
+            # half-space closed form leaves out (a/R = 0.063)
+            import compareCattaneo
+            fine = compareCattaneo.compare(rr[-1]["run"]["case"], "2")
+            xf, qf = np.array(fine["x"]), np.array(fine["q"])
+            order = np.argsort(xf)
+            self_rms = []
+            for row in rr[:-1]:
+                c = compareCattaneo.compare(row["run"]["case"], "2")
+                x, q = np.array(c["x"]), np.array(c["q"])
+                inA = np.abs(x) < c["a"]
+                d = q - np.interp(x, xf[order], qf[order])
+                self_rms.append(float(np.sqrt(np.mean(d[inA] ** 2))) / (c["mu"] * c["p0"]))
+            print("  %-20s q against the finest level's: %s of mu p0" % (
+                m, " -> ".join("%.4f" % v for v in self_rms)))
         for r0, r1 in zip(rr, rr[1:]):
             print("  %-20s q RMS %.4f -> %.4f of mu p0 (falls %.2fx for %.1fx the faces across"
                   " a; first order would be %.2fx)" % (m, r0["rms"], r1["rms"],
