@@ -13,8 +13,9 @@ skewed and tetrahedral cells:
     pressure uniform to 1e-6 (turned 30 degrees, and with nu 0.3, where the
     interface's faces carry a lateral displacement), the penalty with
     cellSize patch to its series-spring offset (comparePatchTestTets.py).
-lagrangeMultiplier on all, the penalty on the patch test. Each run takes
-2 to 11 s on 2 cores."""
+lagrangeMultiplier on all, the penalty on the patch test; hertzSphereTets
+also on 2 processors (D as the serial run's to 1e-6). Each run takes 2 to
+11 s on 2 cores, the parallel one about 20 s."""
 import pytest
 
 import harness
@@ -40,6 +41,21 @@ def test_hertz_point_contact_on_tetrahedra():
     if ck.run(r, name):
         ck.vtk_written(r["case"], name,
                        ["D", "sigma", "contactPressure", "contactGap", "contactActive"])
+    ck.verify()
+
+
+def test_tetrahedra_parallel_equals_serial():
+    """hertzSphereTets on 2 processors (simple, the cut through the contact
+    zone of both patches): every face correction and cell gradient the
+    master side needs is gathered; D equals the serial run's to 1e-6
+    (measured 2.5e-7: the outer tolerance)."""
+    ck = harness.Checks()
+    serial = harness.tutorial_run("hertzSphereTets", "hertzSphereTets_" + LM, ["-method", LM])
+    name = "hertzSphereTetsParallel"
+    r = harness.tutorial_run("hertzSphereTets", name, ["-method", LM, "-parallel"])
+    if ck.run(r, name):
+        ck.displacements_agree(harness.need(serial), r["case"], name + "/D_equals_serial",
+                               1e-6)
     ck.verify()
 
 
