@@ -377,7 +377,7 @@ void Foam::contactPatchPair::moveSlave(const vectorField& slaveD)
     // not exact for a linear D where the faces around a point are not
     // symmetric about it (a triangulated surface), and the overlaps, and
     // so the master's tractions, were then off by the lateral strain (the
-    // tet patch test with nu = 0.3: 6.5e-4, 7e-8 with it). The normal
+    // tet patch test with nu = 0.3: 6.5e-4, 5e-7 with it). The normal
     // part is left to the mean: carried too, it made the tet sphere's
     // surface noisier (p_max +4.9 -> +6.0 % of Hertz, RMS 2.7 -> 3.3 %)
     const tmp<tensorField> tgrad(cellGradients(slave_));
