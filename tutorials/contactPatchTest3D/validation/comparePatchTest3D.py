@@ -100,8 +100,6 @@ sum_f p_f |Sf_f|, against |sigma| (exact or penalty) times the patch area
 function object wrote postProcessing/contactReport/*/upperBottom.dat, its
 last normalForce likewise.
 """
-import os
-import re
 
 from c4fpost import elastic, foamio, patchtest, report
 
@@ -119,79 +117,6 @@ OFFSET_TOL = 1e-3   # fraction of the penalty offset
 LOAD_TOL = 1e-8
 TEST = patchtest.PatchTest(NAME, SLAVE, MASTER, DELTA, L, EXACT_TOL, OFFSET_TOL)
 OTHERS = {"xx": (0, 0), "yy": (1, 1), "xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
-
-
-def _strip(path):
-    text = open(path).read()
-    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
-    return re.sub(r"//[^\n]*", "", text)
-
-
-def rotation_from_mesh(case):
-    """R with columns R e_x, R e_y, R e_z, from the patch normals."""
-    def unit_normal(patch):
-        _, Sf = foamio.patch_geometry(case, patch)
-        n = Sf.sum(axis=0)
-        return n / np.linalg.norm(n)
-    ez = unit_normal(TOP)
-    ex = -unit_normal(SYMMETRY_X)
-    ex -= ez * float(ex @ ez)
-    ex /= np.linalg.norm(ex)
-    return np.column_stack((ex, np.cross(ez, ex), ez))
-
-
-def variant(case):
-    """(contact, method): contact is False when the slave patch's entry of
-    0/D is not a solidContact (Allrun -noContact gives it the exact state,
-    slaveExact); method is its `method` (None without contact)."""
-    text = foamio.strip(open(os.path.join(case, "0", "D")).read())
-    slave = foamio.sub_dict(foamio.sub_dict(text, "boundaryField"), SLAVE)
-    contact = foamio.entry(slave, "type") == "solidContact"
-    return contact, (foamio.entry(slave, "method") if contact else None)
-
-
-def top_displacement(case):
-    text = _strip(os.path.join(case, "0", "D"))
-    m = re.search(r"^\s*topDisplacement\s+\(([^)]*)\)\s*;", text, flags=re.M)
-    return np.array(m.group(1).split(), float)
-
-
-def solid_controls(case):
-    """(tolerance, nCorrectors) of solidMechanics in system/fvSolution."""
-    text = _strip(os.path.join(case, "system", "fvSolution"))
-    body = re.search(r"\bsolidMechanics\s*\{([^}]*)\}", text).group(1)
-    tol = float(re.search(r"\btolerance\s+([^\s;]+)\s*;", body).group(1))
-    ncorr = int(re.search(r"\bnCorrectors\s+([^\s;]+)\s*;", body).group(1))
-    return tol, ncorr
-
-
-def last_step(case):
-    """The solver's last step summary from log.solidContactFoam:
-    dict(time, correctors, residual, converged, contact) or None."""
-    path = os.path.join(case, "log.solidContactFoam")
-    if not os.path.exists(path):
-        return None
-    steps = re.findall(r"^Time = (\S+)\s+correctors = (\d+)\s+residual = (\S+)(.*)$",
-                       open(path).read(), flags=re.M)
-    if not steps:
-        return None
-    t, n, r, rest = steps[-1]
-    return dict(time=t, correctors=int(n), residual=float(r),
-                converged="NOT CONVERGED" not in rest, contact=rest.strip())
-
-
-def convergence_check(case):
-    tol, ncorr = solid_controls(case)
-    step = last_step(case)
-    if step is None:
-        return dict(name=NAME + "/converged", value=float("inf"), reference=0.0,
-                    error=float("inf"), tolerance=tol, passed=False,
-                    units="residual (no step summary in log.solidContactFoam)"), step, ncorr
-    r = step["residual"]
-    return dict(name=NAME + "/converged", value=r, reference=0.0, error=r, tolerance=tol,
-                passed=bool(step["converged"] and r < tol),
-                units="outer residual of time %s after %d correctors"
-                % (step["time"], step["correctors"])), step, ncorr
 
 
 def kind_of(contact, method):
@@ -215,7 +140,7 @@ def no_result(case, contact, method, why):
     """No time written (a step that does not converge stops the solver
     before writing): every stress check fails."""
     inf = float("inf")
-    conv, step, ncorr = convergence_check(case)
+    conv, step, ncorr = patchtest.convergence_check(case, NAME)
     kind = kind_of(contact, method)
     if kind == "penalty":
         names = ["szz_penalty_offset", "szz_uniformity"]
@@ -236,7 +161,7 @@ def no_result(case, contact, method, why):
 
 
 def compare(case):
-    contact, method = variant(case)
+    contact, method = patchtest.contact_variant(case, SLAVE)
     try:
         time = foamio.latest_time(case)
     except FileNotFoundError:
@@ -248,7 +173,7 @@ def compare(case):
     K = elastic.impK(E, nu)
     exact = -E * DELTA / L
 
-    R = rotation_from_mesh(case)
+    R = patchtest.rotation_from_mesh(case, TOP, SYMMETRY_X)
     C, V = foamio.cell_centres_volumes(case)
     Cr = C @ R                          # x' = R^T x, row by row
     Cf, area, slaveCells, h = TEST.slave_geometry(case, V)
@@ -261,7 +186,7 @@ def compare(case):
     others = {k: float(np.abs(Sr[:, i, j]).max() / abs(exact)) for k, (i, j) in OTHERS.items()}
     worst = max(others, key=others.get)
 
-    d = top_displacement(case)
+    d = patchtest.top_displacement(case)
     d0 = R @ np.array([0.0, 0.0, -DELTA])
     loadErr = float(np.linalg.norm(d - d0) / DELTA)
 
@@ -299,7 +224,7 @@ def compare(case):
         res["slaveX"] = (Cf @ R)[:, 0].tolist()
         TEST.master_pressure(case, time, res, R)
 
-    conv, step, ncorr = convergence_check(case)
+    conv, step, ncorr = patchtest.convergence_check(case, NAME)
     checks.append(conv)
     res.update(step=step, nCorrectors=ncorr)
     patchtest.set_passed(checks)

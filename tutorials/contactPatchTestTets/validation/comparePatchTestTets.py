@@ -51,7 +51,6 @@ The master's contact pressure (the slave's, transferred) is printed, not
 checked.
 """
 import os
-import re
 
 from c4fpost import elastic, foamio, patchtest, report
 
@@ -71,70 +70,14 @@ TEST = patchtest.PatchTest(NAME, SLAVE, MASTER, DELTA, L, EXACT_TOL, OFFSET_TOL)
 OTHERS = {"xx": (0, 0), "yy": (1, 1), "xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 
 
-def _strip(path):
-    text = open(path).read()
-    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
-    return re.sub(r"//[^\n]*", "", text)
-
-
-def rotation_from_mesh(case):
-    """R with columns R e_x, R e_y, R e_z, from the patch normals."""
-    def unit_normal(patch):
-        _, Sf = foamio.patch_geometry(case, patch)
-        n = Sf.sum(axis=0)
-        return n / np.linalg.norm(n)
-    ez = unit_normal(TOP)
-    ex = -unit_normal(SYMMETRY_X)
-    ex -= ez * float(ex @ ez)
-    ex /= np.linalg.norm(ex)
-    return np.column_stack((ex, np.cross(ez, ex), ez))
-
-
-def variant(case):
-    """(contact, method): contact is False when the slave's entry of 0/D is
-    not a solidContact (Allrun -noContact); method is its `method`."""
-    text = foamio.strip(open(os.path.join(case, "0", "D")).read())
-    slave = foamio.sub_dict(foamio.sub_dict(text, "boundaryField"), SLAVE)
-    contact = foamio.entry(slave, "type") == "solidContact"
-    return contact, (foamio.entry(slave, "method") if contact else None)
-
-
-def top_displacement(case):
-    text = _strip(os.path.join(case, "0", "D"))
-    m = re.search(r"^\s*topDisplacement\s+\(([^)]*)\)\s*;", text, flags=re.M)
-    return np.array(m.group(1).split(), float)
-
-
-def convergence_check(case):
-    """The last step summary of log.solidContactFoam against solidMechanics'
-    tolerance: (check, step)."""
-    text = _strip(os.path.join(case, "system", "fvSolution"))
-    body = re.search(r"\bsolidMechanics\s*\{([^}]*)\}", text).group(1)
-    tol = float(re.search(r"\btolerance\s+([^\s;]+)\s*;", body).group(1))
-    path = os.path.join(case, "log.solidContactFoam")
-    steps = re.findall(r"^Time = (\S+)\s+correctors = (\d+)\s+residual = (\S+)(.*)$",
-                       open(path).read() if os.path.exists(path) else "", flags=re.M)
-    if not steps:
-        return dict(name=NAME + "/converged", value=float("inf"), reference=0.0,
-                    error=float("inf"), tolerance=tol, passed=False,
-                    units="no step summary in log.solidContactFoam"), None
-    t, n, r, rest = steps[-1]
-    step = dict(time=t, correctors=int(n), residual=float(r),
-                converged="NOT CONVERGED" not in rest)
-    return dict(name=NAME + "/converged", value=step["residual"], reference=0.0,
-                error=step["residual"], tolerance=tol,
-                passed=bool(step["converged"] and step["residual"] < tol),
-                units="outer residual after %d correctors" % step["correctors"]), step
-
-
 def compare(case):
-    contact, method = variant(case)
+    contact, method = patchtest.contact_variant(case, SLAVE)
     time = foamio.latest_time(case)
     E, nu, _ = foamio.elastic_constants(case)
     K = elastic.impK(E, nu)
     exact = -E * DELTA / L
 
-    R = rotation_from_mesh(case)
+    R = patchtest.rotation_from_mesh(case, TOP, SYMMETRY_X)
     C, V = foamio.cell_centres_volumes(case)
     Cr = C @ R
     Cf, area, slaveCells, h = TEST.slave_geometry(case, V)
@@ -152,7 +95,7 @@ def compare(case):
     maxRel, spread = patchtest.uniformity(szz, exact)
     others = {k: float(np.abs(Sr[:, i, j]).max() / abs(exact)) for k, (i, j) in OTHERS.items()}
     worst = max(others, key=others.get)
-    d = top_displacement(case)
+    d = patchtest.top_displacement(case)
     loadErr = float(np.linalg.norm(d - R @ np.array([0.0, 0.0, -DELTA])) / DELTA)
 
     kind = patchtest.method_check(method)["kind"] if contact else "exact"
@@ -196,7 +139,7 @@ def compare(case):
         TEST.master_pressure(case, time, res, R)
         res.update(slaveX=(Cf @ R)[:, 0].tolist(), pErr=pErr, pMin=float(p.min()),
                    pMax=float(p.max()))
-    conv, step = convergence_check(case)
+    conv, step, _ = patchtest.convergence_check(case, NAME)
     checks.append(conv)
     res.update(step=step, predicted=predicted, szz=szz.tolist(), z=Cr[:, 2].tolist())
     patchtest.set_passed(checks)
@@ -245,7 +188,7 @@ def main():
              else "no contact: exact state on both contact patches"))
     patchtest.print_constants(res, "sigma'_zz")
     print("  R from the mesh%s; top displacement (0/D): (%.10g %.10g %.10g)"
-          % ("" if res["rotated"] else " (not rotated)", *top_displacement(args.case)))
+          % ("" if res["rotated"] else " (not rotated)", *patchtest.top_displacement(args.case)))
     print("  slave cells' h = V/A: %.4g .. %.4g m (mean %.4g), %d slave faces"
           % (min(res["h"]), max(res["h"]), np.mean(res["h"]), res["nSlave"]))
     patchtest.print_stress(res, "sigma'_zz", res["kind"] == "penalty")

@@ -313,6 +313,82 @@ class PatchTest:
             print("  (no postProcessing/contactReport/*/%s.dat)" % self.slave)
 
 
+
+# --------------------------------------------------------------------------
+# The 3D patch tests' case readers (contactPatchTest3D, contactPatchTestTets)
+
+def rotation_from_mesh(case, top, symmetry_x):
+    """R with columns R e_x, R e_y, R e_z of a (possibly turned) box, from
+    the patch normals: R e_z the outward normal of `top`, R e_x that of
+    `symmetry_x` negated, each averaged over the patch's faces."""
+    def unit_normal(patch):
+        _, Sf = foamio.patch_geometry(case, patch)
+        n = Sf.sum(axis=0)
+        return n / np.linalg.norm(n)
+    ez = unit_normal(top)
+    ex = -unit_normal(symmetry_x)
+    ex -= ez * float(ex @ ez)
+    ex /= np.linalg.norm(ex)
+    return np.column_stack((ex, np.cross(ez, ex), ez))
+
+
+def contact_variant(case, slave):
+    """(contact, method): contact is False when the slave patch's entry of
+    0/D is not a solidContact (Allrun -noContact); method is its `method`
+    (None without contact)."""
+    text = foamio.strip(open(os.path.join(case, "0", "D")).read())
+    entry = foamio.sub_dict(foamio.sub_dict(text, "boundaryField"), slave)
+    contact = foamio.entry(entry, "type") == "solidContact"
+    return contact, (foamio.entry(entry, "method") if contact else None)
+
+
+def top_displacement(case):
+    """topDisplacement of 0/D (the Allrun's prescribed top displacement)."""
+    text = foamio.strip_comments(open(os.path.join(case, "0", "D")).read())
+    m = re.search(r"^\s*topDisplacement\s+\(([^)]*)\)\s*;", text, flags=re.M)
+    return np.array(m.group(1).split(), float)
+
+
+def solid_controls(case):
+    """(tolerance, nCorrectors) of solidMechanics in system/fvSolution."""
+    text = foamio.strip_comments(open(os.path.join(case, "system", "fvSolution")).read())
+    body = re.search(r"\bsolidMechanics\s*\{([^}]*)\}", text).group(1)
+    tol = float(re.search(r"\btolerance\s+([^\s;]+)\s*;", body).group(1))
+    ncorr = int(re.search(r"\bnCorrectors\s+([^\s;]+)\s*;", body).group(1))
+    return tol, ncorr
+
+
+def last_step(case):
+    """The solver's last step summary from log.solidContactFoam:
+    dict(time, correctors, residual, converged, contact) or None."""
+    path = os.path.join(case, "log.solidContactFoam")
+    if not os.path.exists(path):
+        return None
+    steps = re.findall(r"^Time = (\S+)\s+correctors = (\d+)\s+residual = (\S+)(.*)$",
+                       open(path).read(), flags=re.M)
+    if not steps:
+        return None
+    t, n, r, rest = steps[-1]
+    return dict(time=t, correctors=int(n), residual=float(r),
+                converged="NOT CONVERGED" not in rest, contact=rest.strip())
+
+
+def convergence_check(case, name):
+    """The check `name`/converged: the last step converged, its outer
+    residual below solidMechanics' tolerance. (check, step, nCorrectors)."""
+    tol, ncorr = solid_controls(case)
+    step = last_step(case)
+    if step is None:
+        return dict(name=name + "/converged", value=float("inf"), reference=0.0,
+                    error=float("inf"), tolerance=tol, passed=False,
+                    units="residual (no step summary in log.solidContactFoam)"), step, ncorr
+    r = step["residual"]
+    return dict(name=name + "/converged", value=r, reference=0.0, error=r, tolerance=tol,
+                passed=bool(step["converged"] and r < tol),
+                units="outer residual of time %s after %d correctors"
+                % (step["time"], step["correctors"])), step, ncorr
+
+
 def print_constants(res, stress):
     """The material and the exact value of `stress` (its printed name)."""
     print("  E = %g Pa, nu = %g, K = 2mu + lambda = %g Pa; exact %s = %g Pa"
