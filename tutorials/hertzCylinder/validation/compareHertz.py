@@ -82,17 +82,7 @@ A_TOL_FACES = 1.5         # slave face widths at x = a
 def contact_modulus(case, estar):
     """E* of the two bodies, or of the block alone (estar == 'block'), and
     a one-line description of the materials."""
-    mats = foamio.materials(case)
-    if None in mats:
-        E, nu, ps = mats[None]
-        # Plane stress would use E* = E/2 (nu -> 0 in the plane-strain formula)
-        nu = 0.0 if ps else nu
-        cyl = blk = (E, nu)
-        what = "one law: E = %.4g Pa, nu = %g" % (E, nu)
-    else:
-        cyl, blk = ((mats[z][0], 0.0 if mats[z][2] else mats[z][1]) for z in ("cylinder", "block"))
-        what = ("cylinder E = %.4g Pa, nu = %g; block E = %.4g Pa, nu = %g"
-                % (cyl[0], cyl[1], blk[0], blk[1]))
+    (cyl, blk), what = foamio.body_constants(case, ("cylinder", "block"))
     both = hertz.contact_modulus(cyl[0], cyl[1], blk[0], blk[1])
     if estar == "block":
         alone = blk[0] / (1.0 - blk[1] ** 2)

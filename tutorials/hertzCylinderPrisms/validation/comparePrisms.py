@@ -56,17 +56,6 @@ RMS_TOL = 0.015           # fraction of p0, faces with x < RMS_SPAN a
 RMS_SPAN = 0.8
 
 
-def contact_modulus(case):
-    """E* of the two bodies (one law) and a one-line description."""
-    mats = foamio.materials(case)
-    if None not in mats:
-        sys.exit("%s: expected one material law for both bodies in "
-                 "constant/mechanicalProperties" % NAME)
-    E, nu, ps = mats[None]
-    nu = 0.0 if ps else nu
-    return hertz.contact_modulus(E, nu), "one law: E = %.4g Pa, nu = %g" % (E, nu)
-
-
 def failed(time, slave, why):
     """Both checks failed: nothing to compare with."""
     print("%s: %s on %s at time %s" % (NAME, why, slave, time))
@@ -81,7 +70,8 @@ def compare(case, time=None):
     """The comparison at `time` (a directory name; default the latest)."""
     time = time or foamio.latest_time(case)
     slave = patchtest.slave_patch(case, time, PATCHES)
-    Es, materials = contact_modulus(case)
+    (b1, b2), materials = foamio.body_constants(case)
+    Es = hertz.contact_modulus(*b1, *b2)
     dz = foamio.thickness(case)
 
     Cf, Sf = foamio.patch_geometry(case, slave)

@@ -69,20 +69,11 @@ RMS_TOL = 0.025           # fraction of p0, faces with r < RMS_SPAN a
 RMS_SPAN = 0.8
 
 
-def contact_modulus(case):
-    """E* of the two bodies (one law) and a one-line description."""
-    mats = foamio.materials(case)
-    if None not in mats:
-        sys.exit("compareSphere: expected one material law for both bodies in "
-                 "constant/mechanicalProperties")
-    E, nu, _ = mats[None]
-    return hertz.contact_modulus(E, nu), "one law: E = %.6g Pa, nu = %g" % (E, nu)
-
-
 def compare(case, time=None):
     """The comparison at `time` (a directory name; default the latest)."""
     time = time or foamio.latest_time(case)
-    Es, materials = contact_modulus(case)
+    (b1, b2), materials = foamio.body_constants(case)
+    Es = hertz.contact_modulus(*b1, *b2)
 
     Cf, Sf = foamio.patch_geometry(case, SLAVE)
     n = Cf.shape[0]

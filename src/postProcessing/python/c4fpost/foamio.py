@@ -16,6 +16,7 @@ kirsch, elastic, patchtest).
 """
 import os
 import re
+import sys
 
 import numpy as np
 
@@ -376,6 +377,32 @@ def materials(case):
     coeffs = sub_dict(text, "zonedCoeffs")
     zones = re.findall(r"(?:^|[\s;}])(\w+)\s*\{\s*materialLaw\b", coeffs)
     return {z: _law_constants(sub_dict(coeffs, z)) for z in zones}
+
+
+def body_constants(case, zones=None):
+    """The (E, nu) of the two bodies of a contact case and a one-line
+    description, from constant/mechanicalProperties: the one law of the
+    whole mesh for both, or (a zoned law) those of the cellZones `zones`
+    (two names). A plane-stress law gives nu = 0, so that the plane-strain
+    E/(1 - nu^2) of the contact modulus is E. Exits naming the file when
+    the law is zoned and `zones` does not name two of its zones."""
+    mats = materials(case)
+
+    def plane(c):
+        return c[0], 0.0 if c[2] else c[1]
+
+    if None in mats:
+        E, nu = plane(mats[None])
+        return ((E, nu), (E, nu)), "one law: E = %.6g Pa, nu = %g" % (E, nu)
+    if not zones or any(z not in mats for z in zones):
+        sys.exit("%s: expected one material law for both bodies, or a zoned law with"
+                 " the cellZones %s (found %s)"
+                 % (os.path.join(case, "constant/mechanicalProperties"),
+                    " and ".join(zones) if zones else "of the two bodies",
+                    ", ".join(sorted(mats))))
+    bodies = tuple(plane(mats[z]) for z in zones)
+    return bodies, "; ".join("%s E = %.6g Pa, nu = %g" % (z, b[0], b[1])
+                             for z, b in zip(zones, bodies))
 
 
 def elastic_constants(case, zone=None):
