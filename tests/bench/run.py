@@ -777,7 +777,7 @@ def cattaneo_errors(case):
     def rms(v, sel):
         return float(np.sqrt(np.mean(v[sel] ** 2))) if sel.any() else float("nan")
     from c4fpost import hertz
-    pH = hertz.pressure(x, res["P"], compareCattaneo.R, res["Es"])
+    pH = hertz.pressure(x, res["P"], compareCattaneo.R_EFF, res["Es"])
     first = compareCattaneo.compare(case, "1")
     x1, q1 = np.array(first["x"]), np.array(first["q"])
     # the face width at the centre: faces across the semi-width a

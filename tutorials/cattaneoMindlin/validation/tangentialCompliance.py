@@ -5,12 +5,12 @@ gives a load ratio Q'/(mu P'), measured on this mesh without contact.
 How UX of 0/D was chosen (a design aid, not a check). With elastically
 identical bodies the tangential problem of step 2 is Cattaneo-Mindlin's
 for the pressure of step 1: the increment of the contact traction is the
-closed-form q(x) (c4fpost.cattaneo), on the cylinder against +x (the block
-holds it back), on the block along +x. Put those tractions on both contact
-patches of a copy of the case (solidTraction, one value per face; on the
-cylinder along its face tangent), hold the cylinder's top and the block's
-bottom, and solve once: the block's surface moves by u_b(x), the cylinder's
-by u_c(x). In the real step the top moves by UX and the stick zone does not
+closed-form q(x) (c4fpost.cattaneo, for the two cylinders' effective
+radius R/2), on the cylinder against +x (the base holds it back), on the
+base along +x. Put those tractions on both contact patches of a copy of
+the case (solidTraction, one value per face, along the face's tangent),
+hold the cylinder's top and the base's bottom, and solve once: the base's
+surface moves by u_b(x), the cylinder's by u_c(x). In the real step the top moves by UX and the stick zone does not
 slip, so
     UX = u_b(x) - u_c(x),   |x| < c,
 which must come out uniform over the stick zone (the closed form's stick
@@ -32,8 +32,9 @@ from c4fpost import cattaneo, foamio, hertz
 
 import numpy as np
 
-R = 0.1
-SLAVE, MASTER = "cylinderContact", "blockContact"
+R = 0.2                     # each cylinder's radius [m], system/blockMeshDict
+R_EFF = hertz.effective_radius(R, R)   # Hertz's, of the two cylinders
+SLAVE, MASTER = "cylinderContact", "baseContact"
 
 
 def tangents(Sf):
@@ -59,8 +60,8 @@ def main():
     tr = foamio.read_patch(os.path.join(case, "1", "contactTraction"), SLAVE, len(Cs))
     P = float(np.sum(tr[:, 1] * np.linalg.norm(Ss, axis=1))) / dz
     Q = args.ratio * args.mu * P
-    a = hertz.half_width(P, R, Es)
-    c = cattaneo.stick_half_width(P, Q, args.mu, R, Es)
+    a = hertz.half_width(P, R_EFF, Es)
+    c = cattaneo.stick_half_width(P, Q, args.mu, R_EFF, Es)
     print("P' = %.6g N/m (time 1), a = %.4g mm, Q' = %.4g N/m (Q'/(mu P') = %g, mu = %g),"
           " c = %.4g mm" % (P, a * 1e3, Q, args.ratio, args.mu, c * 1e3))
 
@@ -73,11 +74,11 @@ def main():
     text = re.sub(r"^endTime\s.*;", "endTime         1;", open(cd).read(), flags=re.M)
     open(cd, "w").write(text)
 
-    ts = tangents(Ss)
-    qs = cattaneo.traction(Cs[:, 0], P, Q, args.mu, R, Es)
-    qm = cattaneo.traction(Cm[:, 0], P, Q, args.mu, R, Es)
+    ts, tm = tangents(Ss), tangents(Sm)
+    qs = cattaneo.traction(Cs[:, 0], P, Q, args.mu, R_EFF, Es)
+    qm = cattaneo.traction(Cm[:, 0], P, Q, args.mu, R_EFF, Es)
     d0 = os.path.join(work, "0", "D")
-    for patch, t in ((SLAVE, -qs[:, None] * ts), (MASTER, qm[:, None] * np.array([1.0, 0, 0]))):
+    for patch, t in ((SLAVE, -qs[:, None] * ts), (MASTER, qm[:, None] * tm)):
         foamio.replace_patch_entry(
             d0, patch,
             "        type            solidTraction;\n"
