@@ -73,6 +73,22 @@ Description
     one. `onNonConvergence continue` warns and goes on instead (the step is
     then written and contactReport's `converged` column shows 0).
 
+    Finite deformation (`nonlinearGeometry yes`): the total-Lagrangian
+    balance on the reference mesh, Div P = 0 with P the first
+    Piola-Kirchhoff stress of F = I + grad(D)^T (the material description
+    of Bonet & Wood, Nonlinear Continuum Mechanics for Finite Element
+    Analysis, 2nd ed., 2008, ch. 6), split the same way:
+
+        laplacian(K, D) + div(P^T - K grad D) = 0.
+
+    D stays the unknown, so contact, restart, decomposition and Anderson
+    act on it unchanged. A prescribed traction (solidTraction) is then per
+    reference area (P.N). Every step's last iterate must have J = det F > 0
+    in every cell: a FatalError names the first cell turned inside out and
+    the time, before anything of the step is written (an iterate on the
+    way may pass through J <= 0: the laws then give their small-strain
+    stress). `sigma` is the Cauchy stress P F^T / J.
+
     Each step prints one summary line:
         Time = <t>  correctors = <n>  residual = <r>  [contact state]
 
@@ -86,6 +102,7 @@ Usage
         onNonConvergence | stop or continue                    | no       | stop
         acceleration  | anderson or none                       | no       | anderson
         andersonDepth | difference columns kept (>= 1)         | no       | 15
+        nonlinearGeometry | finite deformation (total Lagrangian) | no | no
     \endtable
 
     `solidContactFoam -listMethods` prints the contact methods of the
@@ -123,6 +140,7 @@ Usage
 #include "contactFvMesh.H"
 #include "outerCorrectorAcceleration.H"
 #include "solidMeshQuality.H"
+#include "checkAdmissible.H"
 
 int main(int argc, char *argv[])
 {
@@ -182,6 +200,15 @@ int main(int argc, char *argv[])
     #include "readSolidMechanicsControls.H"
     #include "createFields.H"
 
+    // The explicit remainder of the stress: (sigma or P^T) - K grad D
+    const auto explicitStress = [&]() -> tmp<volTensorField>
+    {
+        return
+            nonlinearGeometry
+          ? stressFluxPtr() - impK*gradD
+          : sigma - impK*gradD;
+    };
+
     // Anderson acceleration of the outer correctors, or none
     outerCorrectorAcceleration acceleration(solidControls, D);
 
@@ -211,7 +238,7 @@ int main(int argc, char *argv[])
               + fvc::div
                 (
                     mesh.Sf()
-                  & interfaces.interpolateExplicit(sigma - impK*gradD, impK)
+                  & interfaces.interpolateExplicit(explicitStress(), impK)
                 )
             );
 
@@ -297,8 +324,17 @@ int main(int argc, char *argv[])
                 acceleration.scaleStep(alpha);
             }
 
-            gradD = interfaces.grad(D, sigma - impK*gradD, impK);
-            sigma = mech.law().sigma(gradD);
+            gradD = interfaces.grad(D, explicitStress(), impK);
+            if (nonlinearGeometry)
+            {
+                const tmp<volTensorField> P(mech.law().firstPiola(gradD));
+                stressFluxPtr() = P().T();
+                sigma = finiteStrainFields::cauchy(P(), gradD);
+            }
+            else
+            {
+                sigma = mech.law().sigma(gradD);
+            }
 
             if (verbose)
             {
@@ -313,6 +349,13 @@ int main(int argc, char *argv[])
             }
         }
         while (!converged && !multipliersExhausted && nCorr < nCorrectors);
+
+        if (nonlinearGeometry)
+        {
+            // A converged state must be a deformation: nothing of a step
+            // with a cell turned inside out is written
+            checkAdmissible(gradD);
+        }
 
         sigmaEq = sqrt((3.0/2.0)*magSqr(dev(sigma)));
         volPointInterpolation::New(mesh).interpolate(D, pointD);

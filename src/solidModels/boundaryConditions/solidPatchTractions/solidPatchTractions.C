@@ -60,6 +60,16 @@ Foam::solidPatchTractions::explicitNormalTraction(const fvPatch& patch)
         patch.lookupPatchField<volSymmTensorField, symmTensor>("sigma");
 
     const vectorField n(patch.nf());
+
+    // Under nonlinearGeometry the solver registers P^T as stressFlux: the
+    // traction per reference area is N & P^T (the reference mesh's N)
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+    if (mesh.foundObject<volTensorField>("stressFlux"))
+    {
+        const fvPatchTensorField& flux =
+            patch.lookupPatchField<volTensorField, tensor>("stressFlux");
+        return (n & flux) - impK(patch)*(n & gradD);
+    }
     return (n & sigma) - impK(patch)*(n & gradD);
 }
 

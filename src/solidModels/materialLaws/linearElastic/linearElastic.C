@@ -4,6 +4,7 @@
 
 #include "linearElastic.H"
 #include "eigenFoamConversions.H"
+#include "finiteStrainFields.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -174,4 +175,62 @@ Foam::solidMaterialLaws::linearElastic::sigma
     tmp<symmTensorField> ts(new symmTensorField(gradD.size()));
     hookeField(gradD, lame_, planeStressAxis_, ts.ref());
     return ts;
+}
+
+
+Foam::tmp<Foam::volTensorField>
+Foam::solidMaterialLaws::linearElastic::firstPiola
+(
+    const volTensorField& gradD
+) const
+{
+    const c4f::elasticity::Lame lame(lame_);
+    return finiteStrainFields::firstPiola
+    (
+        gradD,
+        [lame](const Eigen::Matrix3d& F)
+        {
+            return c4f::elasticity::stVenantKirchhoffPK1(F, lame);
+        }
+    );
+}
+
+
+Foam::tmp<Foam::tensorField>
+Foam::solidMaterialLaws::linearElastic::firstPiola
+(
+    const tensorField& gradD,
+    const label
+) const
+{
+    const c4f::elasticity::Lame lame(lame_);
+    return finiteStrainFields::firstPiola
+    (
+        gradD,
+        [lame](const Eigen::Matrix3d& F)
+        {
+            return c4f::elasticity::stVenantKirchhoffPK1(F, lame);
+        }
+    );
+}
+
+
+void Foam::solidMaterialLaws::linearElastic::checkGeometry
+(
+    const bool nonlinearGeometry,
+    const dictionary& where
+) const
+{
+    solidMaterialLaw::checkGeometry(nonlinearGeometry, where);
+
+    if (nonlinearGeometry && planeStress_)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry 'planeStress' = yes in " << coeffs_.name()
+            << " cannot be used with 'nonlinearGeometry' yes in "
+            << where.name() << ": plane stress is a small-strain reduction"
+            << " here. Valid: planeStress no (plane strain), or"
+            << " nonlinearGeometry no"
+            << exit(FatalIOError);
+    }
 }

@@ -42,6 +42,33 @@ void pickLaw
     }
 }
 
+//- Each law on the whole volume field, kept where it holds: the laws stay
+//  unaware of the zones, at the cost of one evaluation per law
+template<class Type, class Eval>
+void pickVolField
+(
+    const Foam::PtrList<Foam::solidMaterialLaw>& laws,
+    const Foam::labelUList& cellLaw,
+    const Foam::List<Foam::labelList>& patchLaw,
+    const Eval& eval,
+    Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& to
+)
+{
+    forAll(laws, lawi)
+    {
+        const auto tfrom(eval(laws[lawi]));
+        pickLaw(lawi, cellLaw, tfrom().primitiveField(), to.primitiveFieldRef());
+        forAll(to.boundaryField(), patchi)
+        {
+            pickLaw
+            (
+                lawi, patchLaw[patchi], tfrom().boundaryField()[patchi],
+                to.boundaryFieldRef()[patchi]
+            );
+        }
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -315,23 +342,12 @@ Foam::solidMaterialLaws::zoned::sigma(const volTensorField& gradD) const
     (
         uniformField("sigmaLaw", dimensionedSymmTensor(dimPressure, Zero))
     );
-    volSymmTensorField& s = tsigma.ref();
-
-    // Each law on the whole field, kept where it holds: the laws stay
-    // unaware of the zones, at the cost of one stress evaluation per law
-    forAll(laws_, lawi)
-    {
-        const tmp<volSymmTensorField> tsi(laws_[lawi].sigma(gradD));
-        pickLaw(lawi, cellLaw_, tsi().primitiveField(), s.primitiveFieldRef());
-        forAll(s.boundaryField(), patchi)
-        {
-            pickLaw
-            (
-                lawi, patchLaw_[patchi], tsi().boundaryField()[patchi],
-                s.boundaryFieldRef()[patchi]
-            );
-        }
-    }
+    pickVolField
+    (
+        laws_, cellLaw_, patchLaw_,
+        [&gradD](const solidMaterialLaw& law) { return law.sigma(gradD); },
+        tsigma.ref()
+    );
 
     return tsigma;
 }
@@ -354,6 +370,69 @@ Foam::solidMaterialLaws::zoned::sigma
         );
     }
     return ts;
+}
+
+
+Foam::tmp<Foam::volTensorField>
+Foam::solidMaterialLaws::zoned::firstPiola(const volTensorField& gradD) const
+{
+    tmp<volTensorField> tP
+    (
+        uniformField("firstPiolaLaw", dimensionedTensor(dimPressure, Zero))
+    );
+    pickVolField
+    (
+        laws_, cellLaw_, patchLaw_,
+        [&gradD](const solidMaterialLaw& law) { return law.firstPiola(gradD); },
+        tP.ref()
+    );
+    return tP;
+}
+
+
+Foam::tmp<Foam::tensorField>
+Foam::solidMaterialLaws::zoned::firstPiola
+(
+    const tensorField& gradD,
+    const label patchi
+) const
+{
+    tmp<tensorField> tP(new tensorField(gradD.size(), Zero));
+    forAll(laws_, lawi)
+    {
+        pickLaw
+        (
+            lawi, patchLaw_[patchi], laws_[lawi].firstPiola(gradD, patchi)(),
+            tP.ref()
+        );
+    }
+    return tP;
+}
+
+
+bool Foam::solidMaterialLaws::zoned::needsNonlinearGeometry() const
+{
+    forAll(laws_, lawi)
+    {
+        if (laws_[lawi].needsNonlinearGeometry())
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+void Foam::solidMaterialLaws::zoned::checkGeometry
+(
+    const bool nonlinearGeometry,
+    const dictionary& where
+) const
+{
+    forAll(laws_, lawi)
+    {
+        laws_[lawi].checkGeometry(nonlinearGeometry, where);
+    }
 }
 
 

@@ -1,5 +1,5 @@
 // Unit tests of the finite-deformation kernels,
-// src/kernels/elasticity/hyperelasticLaws. References: Wriggers (2008)
+// src/kernels/elasticity/hyperelasticLaws. References: Bonet & Wood (2008)
 // and Holzapfel (2000) for the laws; the tangents against central
 // differences of the stress; the small-strain limit against hookeLaw;
 // objectivity (P(QF) = Q P(F)) and the uniaxial closed form the
