@@ -3,7 +3,7 @@
 `solidContactFoam -listMethods` prints the run-time selection table, one
 method per line with its traits (contactMethodTraits.H):
 
-    penalty answer=penalty openStart=no slip=yes multipliers=none coeffs=penaltyScale:10,...
+    penalty answer=penalty openStart=no slip=yes multipliers=none finiteStrain=no coeffs=penaltyScale:10,...
 
 This module is the only place the tutorials' validation scripts, the tests
 and the benchmarks learn which methods exist and how to check them; none
@@ -27,7 +27,7 @@ from collections import namedtuple
 
 from c4fpost import foamio
 
-Method = namedtuple("Method", "name answer open_start slip multipliers coeffs")
+Method = namedtuple("Method", "name answer open_start slip multipliers finite_strain coeffs")
 
 
 def parse(text):
@@ -49,6 +49,7 @@ def parse(text):
             open_start=tokens["openStart"] == "yes",
             slip=tokens["slip"] == "yes",
             multipliers=tokens["multipliers"],
+            finite_strain=tokens.get("finiteStrain") == "yes",
             coeffs=coeffs)
     return table
 

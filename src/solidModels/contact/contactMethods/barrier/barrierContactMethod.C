@@ -26,6 +26,7 @@ Foam::contactMethods::barrier::typeTraits
     true,  // openStart
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::none,
+    false,  // finiteStrain
     "dhatScale 1e-3; kappaScale 1; stepFraction 0.2; gapFloor 0.01; maxKappaFactor 100;"
 };
 

@@ -25,6 +25,7 @@ Foam::contactMethods::constitutiveLaw::typeTraits
     false,  // openStart
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::none,
+    true,  // finiteStrain
     ""
 };
 

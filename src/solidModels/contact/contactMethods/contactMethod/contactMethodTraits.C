@@ -39,6 +39,7 @@ Foam::string Foam::contactMethodTraits::describe() const
         << " openStart=" << (openStart ? "yes" : "no")
         << " slip=" << (allowsSlip ? "yes" : "no")
         << " multipliers=" << multiplierKindNames[multipliers]
+        << " finiteStrain=" << (finiteStrain ? "yes" : "no")
         << " coeffs=";
 
     // key:value pairs, so that a line splits on white space into tokens

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "contactMethod.H"
+#include "fvMesh.H"
 
 Foam::autoPtr<Foam::contactMethod> Foam::contactMethod::New
 (
@@ -31,6 +32,35 @@ Foam::autoPtr<Foam::contactMethod> Foam::contactMethod::New
             << " in entry 'method' of " << patchDict.name() << nl << nl
             << "Valid methods:" << nl
             << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    // Finite deformation: only the methods validated under it
+    // (contactMethodTraits::finiteStrain)
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+    const bool nonlinearGeometry =
+        mesh.solutionDict().found("solidMechanics")
+     && mesh.solutionDict().subDict("solidMechanics").lookupOrDefault<bool>
+        (
+            "nonlinearGeometry", false
+        );
+    if (nonlinearGeometry && !traits(methodType).finiteStrain)
+    {
+        wordList valid;
+        for (const word& m : dictionaryConstructorTablePtr_->sortedToc())
+        {
+            if (traits(m).finiteStrain)
+            {
+                valid.append(m);
+            }
+        }
+        FatalIOErrorInFunction(patchDict)
+            << "Method " << methodType << " in entry 'method' of "
+            << patchDict.name() << " is not available with"
+            << " 'nonlinearGeometry yes' in "
+            << mesh.solutionDict().subDict("solidMechanics").name()
+            << " (not validated under finite deformation: the"
+            << " finite-strain patch test). Valid methods there: " << valid
             << exit(FatalIOError);
     }
 

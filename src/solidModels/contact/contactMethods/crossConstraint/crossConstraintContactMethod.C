@@ -25,6 +25,7 @@ Foam::contactMethods::crossConstraint::typeTraits
     false,  // openStart
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::augmented,
+    true,  // finiteStrain
     "penaltyScale 1; penetrationTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100;"
 };
 

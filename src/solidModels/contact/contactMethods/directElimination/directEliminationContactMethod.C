@@ -24,6 +24,7 @@ Foam::contactMethods::directElimination::typeTraits
     false,  // openStart
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::none,
+    true,  // finiteStrain
     ""
 };
 

@@ -24,6 +24,7 @@ Foam::contactMethods::lagrangeMultiplier::typeTraits
     false,  // openStart
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::none,
+    true,  // finiteStrain
     "activeSetScale 1;"
 };
 

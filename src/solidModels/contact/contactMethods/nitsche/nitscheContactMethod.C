@@ -24,6 +24,7 @@ Foam::contactMethods::nitsche::typeTraits
     false,  // openStart
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::none,
+    false,  // finiteStrain
     "gamma0 10; weights equal;"
 };
 

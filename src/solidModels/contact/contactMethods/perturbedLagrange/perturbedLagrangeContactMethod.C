@@ -25,6 +25,7 @@ Foam::contactMethods::perturbedLagrange::typeTraits
     false,  // openStart
     false,  // allowsSlip
     contactMethodTraits::multiplierKind::regularised,
+    true,  // finiteStrain
     "penaltyScale 10; constraintTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100;"
 };
 
