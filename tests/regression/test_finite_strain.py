@@ -78,3 +78,43 @@ def test_bad_finite_strain_input(edit, words):
     ok, note = refused(case, [], words)
     ck.add(name + "/refused", ok, note=note)
     ck.verify()
+
+
+def test_small_strain_limit():
+    """nonlinearGeometry yes at a strain of 1e-6 (contactPatchTest, its top
+    moved 1e-6 m; linearElastic, St Venant-Kirchhoff there) gives the
+    small-strain stress to 1e-4 relative (the difference is O(strain);
+    measured 1.5e-6)."""
+    import numpy as np
+    from c4fpost import patchtest, foamio
+    ck = harness.Checks()
+    cases = {}
+    for geometry in ("no", "yes"):
+        name = "contactPatchTest_strain1e-6_nonlinearGeometry_%s" % geometry
+        case = harness.fresh_copy("contactPatchTest", name)
+        for path, entry, value in (
+                ("0/D", "boundaryField/upperTop/fixedValue", "uniform (0 -1e-6 0)"),
+                ("system/fvSolution", "solidMechanics/nonlinearGeometry", geometry)):
+            rc, out = harness.run(["foamDictionary", "-entry", entry, "-set", value, path],
+                                  cwd=case)
+            if rc:
+                rc, out = harness.run(["foamDictionary", "-entry", entry, "-add", value,
+                                       path], cwd=case)
+            ck.add(name + "/edited_" + entry.split("/")[-1], rc == 0,
+                   note=out.strip()[-300:] if rc else "")
+        rc, _ = harness.run(["./Allrun"], cwd=case, log=os.path.join(case, "log.Allrun"))
+        conv, _, _ = patchtest.convergence_check(case, name)
+        ck.add(name + "/converged", conv["passed"], conv["value"], 0.0, conv["error"],
+               conv["tolerance"])
+        cases[geometry] = case
+    try:
+        n = len(foamio.read_internal(os.path.join(cases["no"], "1", "sigmaEq")))
+        small = patchtest.stress_tensor(cases["no"], "1", n)
+        large = patchtest.stress_tensor(cases["yes"], "1", n)
+        scale = np.abs(small[:, 1, 1]).max()
+        diff = float(np.abs(large - small).max() / scale)
+        ck.add("contactPatchTest_strain1e-6/nonlinear_equals_small_strain", diff <= 1e-4,
+               diff, 0.0, diff, 1e-4, note="max |sigma_yes - sigma_no| / max |sigma_yy|")
+    except (OSError, ValueError) as e:
+        ck.add("contactPatchTest_strain1e-6/nonlinear_equals_small_strain", False, note=str(e))
+    ck.verify()

@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidPatchTractions.H"
+#include "hyperelasticLaws.H"
+#include "eigenFoamConversions.H"
 #include "volFields.H"
 #include "mechanicalModel.H"
 
@@ -88,3 +90,44 @@ Foam::solidPatchTractions::faceCorrection(const fvPatch& patch)
     const vectorField k(patch.Cf() - patch.Cn() - patch.delta());
     return k & tensorField(gradD.primitiveField(), patch.faceCells());
 }
+
+
+Foam::tmp<Foam::scalarField>
+Foam::solidPatchTractions::areaRatio(const fvPatch& patch)
+{
+    tmp<scalarField> tr(new scalarField(patch.size(), 1.0));
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+    if
+    (
+        !mesh.foundObject<volTensorField>("stressFlux")
+     || !mesh.foundObject<volTensorField>("gradD")
+    )
+    {
+        return tr;
+    }
+    const fvPatchTensorField& gradD =
+        patch.lookupPatchField<volTensorField, tensor>("gradD");
+    const vectorField N(patch.nf());
+    scalarField& r = tr.ref();
+    forAll(r, facei)
+    {
+        const Eigen::Matrix3d F =
+            c4f::elasticity::deformationGradient
+            (
+                c4fConvert::toEigen(gradD[facei])
+            );
+        if
+        (
+            c4f::elasticity::checkJacobian(F)
+         == c4f::elasticity::JacobianCheck::ok
+        )
+        {
+            r[facei] =
+                c4f::elasticity::areaRatio(F, c4fConvert::toEigen(N[facei]));
+        }
+    }
+    return tr;
+}
+
+
+// ************************************************************************* //

@@ -4,6 +4,7 @@
 
 #include "contactReporter.H"
 #include "contactCorrector.H"
+#include "solidPatchTractions.H"
 #include "volFields.H"
 #include "OStringStream.H"
 
@@ -93,12 +94,15 @@ void Foam::contactReporter::setFields
     const fvMesh& mesh = patch_.boundaryMesh().mesh();
     const label patchi = patch_.index();
 
+    // Per current area: under finite deformation the laws' tractions are
+    // per reference area (the total-Lagrangian P.N), Nanson's da/dA apart
+    const scalarField ratio(solidPatchTractions::areaRatio(patch_));
     outputField<scalar>(mesh, "contactPressure", dimPressure)
-        .boundaryFieldRef()[patchi] == history_.pressure();
+        .boundaryFieldRef()[patchi] == history_.pressure()/ratio;
     outputField<scalar>(mesh, "contactGap", dimLength)
         .boundaryFieldRef()[patchi] == gap;
     outputField<vector>(mesh, "contactTraction", dimPressure)
-        .boundaryFieldRef()[patchi] == history_.traction();
+        .boundaryFieldRef()[patchi] == history_.traction()/ratio;
     outputField<scalar>(mesh, "contactActive", dimless)
         .boundaryFieldRef()[patchi] == active;
 
@@ -184,6 +188,10 @@ Foam::contactReporter::row Foam::contactReporter::report() const
     const vectorField& traction = history_.traction();
     const scalarField& pressure = history_.pressure();
     const boolList& active = history_.cond().active;
+    // Forces from the tractions per reference area and the reference
+    // areas; the area and the pressure per current area (finite
+    // deformation; the ratio is 1 in small strain)
+    const scalarField ratio(solidPatchTractions::areaRatio(patch_));
 
     forAll(A, facei)
     {
@@ -193,10 +201,10 @@ Foam::contactReporter::row Foam::contactReporter::report() const
         r.tangentialForce += mag(F - Fn*n[facei]);
         if (facei < active.size() && active[facei])
         {
-            r.contactArea += A[facei];
+            r.contactArea += A[facei]*ratio[facei];
             ++r.activeFaces;
         }
-        r.maxPressure = max(r.maxPressure, pressure[facei]);
+        r.maxPressure = max(r.maxPressure, pressure[facei]/ratio[facei]);
         r.maxPenetration = max(r.maxPenetration, -gap[facei]);
     }
 
