@@ -118,3 +118,33 @@ def test_small_strain_limit():
     except (OSError, ValueError) as e:
         ck.add("contactPatchTest_strain1e-6/nonlinear_equals_small_strain", False, note=str(e))
     ck.verify()
+
+
+@pytest.mark.xdist_group("finiteStrainPatchTest_parallel")
+def test_finite_strain_parallel_equals_serial_and_restarts():
+    """On 2 processors (the cut at x = 0.5 m through both contact patches)
+    the closed form as in serial, D to 1e-6 of the serial run's; the
+    reconstructed case continued in serial for a step at the same load
+    starts converged (at most 3 correctors: the written precision's first
+    residual, as in small strain) with the same normal force to 1e-6."""
+    ck = harness.Checks()
+    name = "%s_parallel" % TUTORIAL
+    par = harness.tutorial_run(TUTORIAL, name, ["-parallel"])
+    serial = harness.tutorial_run(TUTORIAL, "%s_serial" % TUTORIAL)
+    if ck.run(par, name) and ck.run(serial, "%s_serial" % TUTORIAL):
+        ck.decomposed(par["case"], name + "/decomposed")
+        ck.displacements_agree(serial["case"], par["case"], name + "/D_equals_serial", 1e-6)
+        r = harness.restart_run(par["case"])
+        steps = re.findall(r"^Time = (\S+)\s+correctors = (\d+).*F_N = (\S+)", r["out"],
+                           flags=re.M)
+        if r["rc"] or len(steps) != 1 or steps[0][0] != "2":
+            ck.add(name + "/restart", False,
+                   note="rc=%d, steps %s, see %s" % (r["rc"], steps, r["case"]))
+        else:
+            first = re.findall(r"F_N = (\S+)", open(os.path.join(
+                par["case"], "log.solidContactFoam")).read())[-1]
+            ncorr, f1, f2 = int(steps[0][1]), float(first), float(steps[0][2])
+            ck.add(name + "/restart_correctors", ncorr <= 3, ncorr, 2, ncorr - 2, 1)
+            err = abs(f2 - f1) / abs(f1)
+            ck.add(name + "/restart_normal_force", err <= 1e-6, f2, f1, err, 1e-6)
+    ck.verify()
