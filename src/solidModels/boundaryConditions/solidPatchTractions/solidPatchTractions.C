@@ -92,6 +92,12 @@ Foam::solidPatchTractions::faceCorrection(const fvPatch& patch)
 }
 
 
+bool Foam::solidPatchTractions::finiteDeformation(const fvMesh& mesh)
+{
+    return mesh.foundObject<volTensorField>("stressFlux");
+}
+
+
 Foam::tmp<Foam::scalarField>
 Foam::solidPatchTractions::areaRatio(const fvPatch& patch)
 {

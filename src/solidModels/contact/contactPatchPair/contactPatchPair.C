@@ -609,6 +609,18 @@ Foam::List<Foam::List<Foam::vector>> Foam::contactPatchPair::overlapCorrections
     const tensorField& masterGrad
 ) const
 {
+    // The overlap centroids are in the current configuration; the gradients
+    // are of the reference mesh (dD/dX). Under finite deformation a current
+    // offset dx is dX = F^-1 dx of the reference, F = I + grad(D)^T (in
+    // small strain the difference is second order and is left out, so
+    // that every small-strain answer stays as it was)
+    const bool finite =
+        solidPatchTractions::finiteDeformation(slave_.boundaryMesh().mesh());
+    const auto reference = [finite](const vector& dx, const tensor& G)
+    {
+        return finite ? vector(inv(I + G.T()) & dx) : dx;
+    };
+
     List<List<vector>> delta(overlapFaces_.size());
     forAll(overlapFaces_, i)
     {
@@ -620,8 +632,8 @@ Foam::List<Foam::List<Foam::vector>> Foam::contactPatchPair::overlapCorrections
             const vector& c = overlapCentroids_[i][k];
             const vector xm(masterRefCentres_[j] + masterFaceD_[j]);
             delta[i][k] =
-                ((c - xm) & masterGrad[j])
-              - ((c - slaveCentres_[i]) & slaveGrad[i]);
+                (reference(c - xm, masterGrad[j]) & masterGrad[j])
+              - (reference(c - slaveCentres_[i], slaveGrad[i]) & slaveGrad[i]);
         }
     }
     return delta;

@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "frictionModel.H"
-#include "fvMesh.H"
 
 Foam::autoPtr<Foam::frictionModel> Foam::frictionModel::New
 (
@@ -25,28 +24,6 @@ Foam::autoPtr<Foam::frictionModel> Foam::frictionModel::New
             << " in entry 'friction' of " << patchDict.name() << nl << nl
             << "Valid friction models:" << nl
             << dictionaryConstructorTablePtr_->sortedToc()
-            << exit(FatalIOError);
-    }
-
-    // Finite deformation: the tangential laws are not validated there yet
-    // (the finite-strain patch test with coulomb missed its uniform state
-    // by 1.5e-3); only frictionless contact is offered (issue 22)
-    const fvMesh& mesh = patch.boundaryMesh().mesh();
-    const bool nonlinearGeometry =
-        mesh.solutionDict().found("solidMechanics")
-     && mesh.solutionDict().subDict("solidMechanics").lookupOrDefault<bool>
-        (
-            "nonlinearGeometry", false
-        );
-    if (nonlinearGeometry && modelType != "frictionless")
-    {
-        FatalIOErrorInFunction(patchDict)
-            << "Friction model " << modelType << " in entry 'friction' of "
-            << patchDict.name() << " is not available with"
-            << " 'nonlinearGeometry yes' in "
-            << mesh.solutionDict().subDict("solidMechanics").name()
-            << " (not validated under finite deformation yet)."
-            << " Valid there: friction frictionless"
             << exit(FatalIOError);
     }
 
