@@ -9,6 +9,7 @@ and a neo-Hookean with nu = 0.5 must stop with a FatalIOError and write
 no time."""
 import os
 import re
+import shutil
 
 import pytest
 
@@ -149,4 +150,71 @@ def test_finite_strain_parallel_equals_serial_and_restarts():
             ck.add(name + "/restart_correctors", ncorr <= 3, ncorr, 2, ncorr - 2, 1)
             err = abs(f2 - f1) / abs(f1)
             ck.add(name + "/restart_normal_force", err <= 1e-6, f2, f1, err, 1e-6)
+    ck.verify()
+
+
+BLOCK = {
+    "system/blockMeshDict": """FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+scale 1;
+vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 0.1) (1 0 0.1) (1 1 0.1) (0 1 0.1));
+blocks (hex (0 1 2 3 4 5 6 7) (8 8 1) simpleGrading (1 1 1));
+edges ();
+boundary
+(
+    bottom { type patch; faces ((1 5 4 0)); }
+    top { type patch; faces ((3 7 6 2)); }
+    left { type symmetryPlane; faces ((0 4 7 3)); }
+    right { type patch; faces ((2 6 5 1)); }
+    frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
+);
+""",
+    "constant/mechanicalProperties": """FoamFile { version 2.0; format ascii; class dictionary; object mechanicalProperties; }
+materialLaw     neoHookean;
+neoHookeanCoeffs { E 10e6; nu 0.3; }
+""",
+    "0/D": """FoamFile { version 2.0; format ascii; class volVectorField; object D; }
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    bottom { type fixedNormalSlip; fixedValue uniform (0 0 0); }
+    top { type fixedNormalSlip; fixedValue uniform (0 -1.2 0); }
+    left { type symmetryPlane; }
+    right { type solidTraction; traction constant (0 0 0); pressure constant 0; value uniform (0 0 0); }
+    frontAndBack { type empty; }
+}
+""",
+}
+
+
+def test_inverted_cell_stops_the_step():
+    """A neo-Hookean square whose top is pushed 1.2 times its height below
+    its bottom (no contact): the last iterate has cells with J <= 0. The
+    solver must stop with a FatalError naming the cell, J and the time,
+    and write no time directory."""
+    ck = harness.Checks()
+    name = "finiteStrainInvertedCell"
+    case = os.path.join(harness.WORK, name)
+    shutil.rmtree(case, ignore_errors=True)
+    os.makedirs(os.path.join(case, "0"))
+    shutil.copytree(os.path.join(harness.ROOT, "tutorials", TUTORIAL, "system"),
+                    os.path.join(case, "system"))
+    os.makedirs(os.path.join(case, "constant"))
+    for path, text in BLOCK.items():
+        with open(os.path.join(case, path), "w") as f:
+            f.write(text)
+    cd = os.path.join(case, "system", "controlDict")
+    text = re.sub(r"functions\s*\{.*\}\s*\n", "", open(cd).read(), flags=re.S)
+    open(cd, "w").write(text)
+    fs = os.path.join(case, "system", "fvSolution")
+    text = re.sub(r"nCorrectors\s+\d+;", "nCorrectors 100;", open(fs).read())
+    open(fs, "w").write(text)
+    harness.run(["blockMesh"], cwd=case, log=os.path.join(case, "log.blockMesh"))
+    rc, out = harness.run(["solidContactFoam"], cwd=case,
+                          log=os.path.join(case, "log.solidContactFoam"))
+    wrote = [d for d in os.listdir(case) if re.fullmatch(r"[1-9][0-9.e+-]*", d)]
+    ok = rc != 0 and "FOAM FATAL ERROR" in out and "J = det F" in out \
+        and "Time 1: cell" in out and not wrote
+    ck.add(name + "/stopped", ok, note="(rc=%d%s)" % (
+        rc, "" if ok else ", see %s/log.solidContactFoam" % case))
     ck.verify()
