@@ -1049,13 +1049,20 @@ def unstructured_bench():
 
 
 def main():
+    global FRICTION_CATTANEO_METHODS
     import argparse
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa",
                                        "perturbedLagrange", "methods", "friction",
                                        "unstructured"),
                     help="run one part only (convergence includes hertz's runs)")
+    ap.add_argument("--cattaneo-methods", nargs="+", metavar="METHOD",
+                    help="the friction part's cattaneoMindlin methods (default: %s;"
+                    " refine 4 takes ~13 min per method on 2 cores)"
+                    % " ".join(FRICTION_CATTANEO_METHODS))
     args = ap.parse_args()
+    if args.cattaneo_methods:
+        FRICTION_CATTANEO_METHODS = tuple(args.cattaneo_methods)
     t0 = time.time()
     os.makedirs(WORK, exist_ok=True)
     if args.only in (None, "convergence", "hertz"):
