@@ -92,6 +92,25 @@ Foam::solidPatchTractions::faceCorrection(const fvPatch& patch)
 }
 
 
+Foam::tmp<Foam::tensorField>
+Foam::solidPatchTractions::cellFluxStress(const fvPatch& patch)
+{
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+    if (finiteDeformation(mesh))
+    {
+        return patch.lookupPatchField<volTensorField, tensor>("stressFlux")
+            .patchInternalField();
+    }
+    const symmTensorField s(sigma(patch).patchInternalField());
+    tmp<tensorField> tX(new tensorField(s.size()));
+    forAll(s, i)
+    {
+        tX.ref()[i] = tensor(s[i]);
+    }
+    return tX;
+}
+
+
 bool Foam::solidPatchTractions::finiteDeformation(const fvMesh& mesh)
 {
     return mesh.foundObject<volTensorField>("stressFlux");

@@ -132,8 +132,7 @@ Foam::contactSlaveState Foam::contactCorrector::state
     if (h.method().usesCellStress())
     {
         // The cells' own stress, not the face value the last traction set
-        s.cellStress =
-            solidPatchTractions::sigma(patch).patchInternalField();
+        s.cellStress = solidPatchTractions::cellFluxStress(patch);
         s.masterCellStress = pair_->masterCellStress();
     }
     return s;

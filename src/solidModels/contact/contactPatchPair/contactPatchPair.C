@@ -710,12 +710,12 @@ Foam::tmp<Foam::scalarField> Foam::contactPatchPair::masterStiffness() const
 }
 
 
-Foam::tmp<Foam::symmTensorField>
+Foam::tmp<Foam::tensorField>
 Foam::contactPatchPair::masterCellStress() const
 {
     return slaveValues
     (
-        solidPatchTractions::sigma(master_).patchInternalField()()
+        solidPatchTractions::cellFluxStress(master_)()
     );
 }
 

@@ -24,7 +24,7 @@ Foam::contactMethods::nitsche::typeTraits
     false,  // openStart
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::none,
-    false,  // finiteStrain
+    true,  // finiteStrain
     "gamma0 10; weights equal;"
 };
 
@@ -111,8 +111,10 @@ void Foam::contactMethods::nitsche::correct
             // two bodies' cells, -(I - n n) sigma n, with the weights of
             // sigma_n (the tangential Nitsche term of Chouly 2014, J. Math.
             // Anal. Appl. 411:329, for Tresca friction)
-            const vector ts(state.cellStress[facei] & n);
-            const vector tm(state.masterCellStress[facei] & n);
+            // n & X: the traction (X = sigma, or P^T under finite
+            // deformation, per reference area; the same for a symmetric X)
+            const vector ts(n & state.cellStress[facei]);
+            const vector tm(n & state.masterCellStress[facei]);
             const scalar ws =
                 weights_ == "stiffness"
               ? c4f::contact::nitscheSlaveWeight
