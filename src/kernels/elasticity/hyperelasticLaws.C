@@ -19,6 +19,14 @@ inline int v(const int i, const int J)
     return i + 3*J;
 }
 
+//- St Venant-Kirchhoff's second Piola-Kirchhoff stress S(E(F))
+Eigen::Matrix3d stVenantKirchhoffPK2(const Eigen::Matrix3d& F, const Lame& p)
+{
+    const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d E = 0.5*(F.transpose()*F - I);
+    return p.lambda*E.trace()*I + 2*p.mu*E;
+}
+
 } // namespace
 
 
@@ -62,18 +70,14 @@ std::string describe(const JacobianCheck c)
 
 Eigen::Matrix3d stVenantKirchhoffPK1(const Eigen::Matrix3d& F, const Lame& p)
 {
-    const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-    const Eigen::Matrix3d E = 0.5*(F.transpose()*F - I);
-    const Eigen::Matrix3d S = p.lambda*E.trace()*I + 2*p.mu*E;
-    return F*S;
+    return F*stVenantKirchhoffPK2(F, p);
 }
 
 
 Tangent9 stVenantKirchhoffTangent(const Eigen::Matrix3d& F, const Lame& p)
 {
     const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-    const Eigen::Matrix3d E = 0.5*(F.transpose()*F - I);
-    const Eigen::Matrix3d S = p.lambda*E.trace()*I + 2*p.mu*E;
+    const Eigen::Matrix3d S = stVenantKirchhoffPK2(F, p);
     const Eigen::Matrix3d b = F*F.transpose();
 
     Tangent9 A;

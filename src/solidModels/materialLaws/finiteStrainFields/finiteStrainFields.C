@@ -64,8 +64,8 @@ Foam::tmp<Foam::tensorField> Foam::finiteStrainFields::firstPiola
 
 Foam::tmp<Foam::symmTensorField> Foam::finiteStrainFields::cauchy
 (
-    const tensorField& gradD,
-    const PK1& law
+    const tensorField& firstPiola,
+    const tensorField& gradD
 )
 {
     tmp<symmTensorField> ts(new symmTensorField(gradD.size(), Zero));
@@ -78,11 +78,21 @@ Foam::tmp<Foam::symmTensorField> Foam::finiteStrainFields::cauchy
         {
             s[i] = c4fConvert::toFoamSymm
             (
-                c4f::elasticity::cauchyFromPK1(law(F), F)
+                c4f::elasticity::cauchyFromPK1(c4fConvert::toEigen(firstPiola[i]), F)
             );
         }
     }
     return ts;
+}
+
+
+Foam::tmp<Foam::symmTensorField> Foam::finiteStrainFields::cauchy
+(
+    const tensorField& gradD,
+    const PK1& law
+)
+{
+    return cauchy(firstPiola(gradD, law)(), gradD);
 }
 
 
@@ -110,15 +120,9 @@ Foam::tmp<Foam::volSymmTensorField> Foam::finiteStrainFields::cauchy
     const PK1& law
 )
 {
-    tmp<volSymmTensorField> ts(unnamed<volSymmTensorField>("sigmaLaw", gradD, Zero));
-    volSymmTensorField& s = ts.ref();
-    s.primitiveFieldRef() = cauchy(gradD.primitiveField(), law);
-    forAll(s.boundaryField(), patchi)
-    {
-        s.boundaryFieldRef()[patchi] = cauchy(gradD.boundaryField()[patchi], law);
-    }
-    return ts;
+    return cauchy(firstPiola(gradD, law)(), gradD);
 }
+
 
 Foam::tmp<Foam::volSymmTensorField> Foam::finiteStrainFields::cauchy
 (
@@ -128,32 +132,11 @@ Foam::tmp<Foam::volSymmTensorField> Foam::finiteStrainFields::cauchy
 {
     tmp<volSymmTensorField> ts(unnamed<volSymmTensorField>("sigma", gradD, Zero));
     volSymmTensorField& s = ts.ref();
-
-    const auto map = [](const tensorField& P, const tensorField& G, symmTensorField& to)
-    {
-        forAll(G, i)
-        {
-            const Eigen::Matrix3d F =
-                c4f::elasticity::deformationGradient(c4fConvert::toEigen(G[i]));
-            to[i] =
-                admissible(F)
-              ? c4fConvert::toFoamSymm
-                (
-                    c4f::elasticity::cauchyFromPK1(c4fConvert::toEigen(P[i]), F)
-                )
-              : symmTensor::zero;
-        }
-    };
-
-    map(firstPiola.primitiveField(), gradD.primitiveField(), s.primitiveFieldRef());
+    s.primitiveFieldRef() = cauchy(firstPiola.primitiveField(), gradD.primitiveField());
     forAll(s.boundaryField(), patchi)
     {
-        map
-        (
-            firstPiola.boundaryField()[patchi],
-            gradD.boundaryField()[patchi],
-            s.boundaryFieldRef()[patchi]
-        );
+        s.boundaryFieldRef()[patchi] =
+            cauchy(firstPiola.boundaryField()[patchi], gradD.boundaryField()[patchi]);
     }
     return ts;
 }
