@@ -95,6 +95,14 @@ CASES = [
      [("system/fvSolution", r"^(\s*)nCorrectors\s+\d+;", r"\1nCorrectors 1;")],
      ["FOAM FATAL ERROR", "Load step at time 1 did not converge in nCorrectors = 1",
       "Contact state:", "F_N =", "onNonConvergence"]),
+    # A step that carries the upper block 1.2 m down, through the lower one and
+    # beyond the search distance (ten cells, 1 m): without the check it
+    # converged with no contact and overlapping bodies
+    ("passedThroughInOneStep", "contactPatchTest",
+     [("0/D", r"fixedValue(\s+)uniform \(0 -0\.01 0\);", r"fixedValue\1uniform (0 -1.2 0);")],
+     ["FOAM FATAL ERROR", "Contact patch lowerTop at time 1: 10 of its 10 faces passed"
+      " through the master patch upperBottom", "search distance 1 m", "deltaT",
+      "searchDistance"]),
     # Contact pair entries (contactPatchTest: slave lowerTop, master upperBottom)
     ("shadowPatchMissing", "contactPatchTest",
      [("0/D", r"^(\s*)shadowPatch\s+upperBottom;", r"\1shadowPatch upperBotom;")],

@@ -220,10 +220,11 @@ def test_inverted_cell_stops_the_step():
     ck.verify()
 
 
-@pytest.mark.xfail(strict=True, reason="issue 22, open: with nu = 0.4 (lateral stretch "
-                   "1.15) the master's corner slides over the slave and penetrates it; "
-                   "the run converges to a state 17 % off. Strict: this test fails the "
-                   "suite once it passes, so that the mark is taken off.")
+@pytest.mark.xfail(strict=True, reason="issue 22, open: from nu = 0.35 the run converges "
+                   "to a second fixed point of the discrete equations, held by a tilt of "
+                   "the master's last faces at the free edge (docs/tutorials.md); at "
+                   "nu = 0.4 17 % off. Strict: this test fails the suite once it "
+                   "passes, so that the mark is taken off.")
 def test_finite_strain_patch_test_nu_0_4():
     ck = harness.Checks()
     name = "%s_nu0.4" % TUTORIAL

@@ -306,5 +306,47 @@ std::vector<double> conservativeWeights(const std::vector<double>& overlaps)
     return w;
 }
 
+bool projectsInside
+(
+    const Eigen::Vector3d& p,
+    const Polygon& convex,
+    const double relTol
+)
+{
+    if (convex.size() < 3)
+    {
+        return false;
+    }
+    const Eigen::Vector3d A = areaVector(convex);
+    const double mag = A.norm();
+    double L = 0;
+    for (const Eigen::Vector3d& v : convex)
+    {
+        L = std::max(L, (v - convex[0]).norm());
+    }
+    if (!(mag > relTol*L*L))
+    {
+        return false;
+    }
+
+    // The Newell vector orients the polygon counter-clockwise about n, so
+    // the interior lies to the left of every edge; the normal component
+    // of p drops out of each triple product
+    const Eigen::Vector3d n = A/mag;
+    const double tol = relTol*L*L;
+    const std::size_t nv = convex.size();
+    for (std::size_t i = 0; i < nv; ++i)
+    {
+        const Eigen::Vector3d& a = convex[i];
+        const Eigen::Vector3d& b = convex[(i + 1) % nv];
+        if ((b - a).cross(p - a).dot(n) < -tol)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
 } // End namespace transfer
 } // End namespace c4f

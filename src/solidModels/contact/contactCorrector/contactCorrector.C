@@ -200,6 +200,10 @@ void Foam::contactCorrector::correct
     // 1. Both surfaces in the current configuration, and the projection
     const vectorField Df(centreDisplacement(slave));
     pair_->update(centreDisplacement(master), Df);
+    if (newStep)
+    {
+        pair_->beginStep();
+    }
 
     // 2. The reaction of the current state, from its face values and
     // gradient: the last solve's pressure, or the pressure of the state
@@ -310,9 +314,48 @@ bool Foam::contactCorrector::converged
     const scalar F = gSum(h.pressure()*slave.magSf());
     const scalar dF = mag(F - normalForce_);
     const label nActive = h.nActive();
-    return
+    const bool converged =
         changes == 0
      && (nActive == 0 || dF <= tolerance*max(mag(F), VSMALL));
+
+    if (converged && valid())
+    {
+        checkPassedThrough(slave);
+    }
+    return converged;
+}
+
+
+void Foam::contactCorrector::checkPassedThrough(const fvPatch& slave) const
+{
+    // A face the step carried through the master, out of the search's
+    // reach, has no contact and no force: the step would converge to
+    // bodies that overlap, so it stops here before anything is written
+    scalarField depth;
+    const labelList faces(pair_->passedThrough(depth));
+    const label n = returnReduce(faces.size(), sumOp<label>());
+    if (n == 0)
+    {
+        return;
+    }
+    const scalar maxDepth =
+        returnReduce(depth.size() ? max(depth) : 0, maxOp<scalar>());
+    const Time& time = slave.boundaryMesh().mesh().time();
+    FatalErrorInFunction
+        << "Contact patch " << slave.name() << " at time "
+        << time.timeName() << ": " << n << " of its "
+        << returnReduce(slave.size(), sumOp<label>())
+        << " faces passed through the master patch "
+        << pair_->masterPatch().name() << " within the load step: they lie up"
+        << " to " << maxDepth << " m behind the master faces they faced at"
+        << " the step's start, beyond the search distance "
+        << pair_->searchDistance() << " m, where the search sees no"
+        << " contact." << nl
+        << "Take smaller load steps (deltaT in system/controlDict) so that"
+        << " no face moves farther than the search distance in one step,"
+        << " or raise searchDistance in the contact patch's entry of the"
+        << " displacement field (default: ten of the slave's cells)"
+        << exit(FatalError);
 }
 
 

@@ -603,6 +603,39 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
 }
 
 
+Foam::labelList Foam::contactPatchPair::passedThrough
+(
+    scalarField& depth
+) const
+{
+    DynamicList<label> faces;
+    DynamicList<scalar> depths;
+    if (stepMasterFace_.size() == inRange_.size())
+    {
+        forAll(inRange_, facei)
+        {
+            const label j = stepMasterFace_[facei];
+            if (inRange_[facei] || j < 0)
+            {
+                continue;
+            }
+            const Eigen::Vector3d x(c4fConvert::toEigen(slaveCentres_[facei]));
+            const std::vector<Eigen::Vector3d> poly(masterPolygon(j));
+            const double d =
+                (x - c4f::transfer::polygonCentroid(poly))
+               .dot(masterNormals_[j]);
+            if (d < 0 && c4f::transfer::projectsInside(x, poly))
+            {
+                faces.append(facei);
+                depths.append(-d);
+            }
+        }
+    }
+    depth.transfer(depths);
+    return labelList(std::move(faces));
+}
+
+
 Foam::List<Foam::List<Foam::vector>> Foam::contactPatchPair::overlapCorrections
 (
     const tensorField& slaveGrad,

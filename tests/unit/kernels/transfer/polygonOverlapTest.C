@@ -774,3 +774,41 @@ TEST(polygonCentroid, firstMomentOfAnOverlapSplitsAdditively)
     EXPECT_NEAR(mean.y(), 0.5, 1e-14);
     EXPECT_NEAR(polygonCentroid(o1).x(), 0.275, 1e-14);
 }
+
+
+TEST(ProjectsInside, aboveBelowBesideAndOnTheEdge)
+{
+    const Polygon sq = rect(0, 1, 0, 1);
+    // Height above or below the plane does not matter, nor the numbering
+    for (const Polygon& p : {sq, reversed(sq)})
+    {
+        EXPECT_TRUE(projectsInside(V(0.5, 0.5, 0), p));
+        EXPECT_TRUE(projectsInside(V(0.2, 0.9, 3.0), p));
+        EXPECT_TRUE(projectsInside(V(0.2, 0.9, -7.0), p));
+        EXPECT_TRUE(projectsInside(V(1.0, 0.5, -1.0), p));
+        EXPECT_TRUE(projectsInside(V(0.0, 0.0, 1.0), p));
+        EXPECT_FALSE(projectsInside(V(1.0 + 1e-6, 0.5, -1.0), p));
+        EXPECT_FALSE(projectsInside(V(-0.5, 0.5, 0), p));
+        EXPECT_FALSE(projectsInside(V(0.5, 2.0, 0.1), p));
+    }
+}
+
+
+TEST(ProjectsInside, tiltedTriangleAndDegenerateInput)
+{
+    // A triangle in the plane x + y + z = 1; points moved along its normal
+    // keep their answer
+    const Polygon tri{V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)};
+    const V n = V(1, 1, 1).normalized();
+    const V c = (tri[0] + tri[1] + tri[2])/3.0;
+    for (const double h : {-2.0, 0.0, 0.3, 5.0})
+    {
+        EXPECT_TRUE(projectsInside(c + h*n, tri));
+        EXPECT_FALSE(projectsInside(V(1, 1, -1) + h*n, tri));
+    }
+    EXPECT_FALSE(projectsInside(c, Polygon{V(0, 0, 0), V(1, 0, 0)}));
+    EXPECT_FALSE
+    (
+        projectsInside(V(0.5, 0, 0), Polygon{V(0, 0, 0), V(1, 0, 0), V(2, 0, 0)})
+    );
+}
