@@ -141,6 +141,7 @@ Usage
 #include "outerCorrectorAcceleration.H"
 #include "solidMeshQuality.H"
 #include "checkAdmissible.H"
+#include "zeroGradientFvPatchFields.H"
 
 int main(int argc, char *argv[])
 {

@@ -24,7 +24,7 @@ Foam::contactMethods::penalty::typeTraits
     false,  // openStart
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::none,
-    false,  // finiteStrain
+    true,  // finiteStrain
     "penaltyScale 10; implicit yes; relaxationFactor 0.05;"
 };
 
