@@ -59,6 +59,11 @@ slip; a method without a slip law is listed as refused) and the stick
 patch test for every method (correctors, stress error); markdown in
 friction.md, q's RMS against the faces across a in friction.png.
 
+Finite deformation (`run.py --only finiteStrain`, issue 22):
+finiteStrainCylinder's force at -refine 1 and 2 against a CalculiX curve
+made in this run (validation/calculix.py; the stored one without ccx),
+and finiteStrainPatchTest's correctors for nu 0.3, 0.4 and 0.45.
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
@@ -1048,13 +1053,60 @@ def unstructured_bench():
                 "%.1f" % free["wall"] if free["converged"] else "-"))
 
 
+def finite_strain_bench():
+    """finiteStrainCylinder's force against CalculiX's over the ten steps at
+    two mesh levels, with a CalculiX curve made in this run (ccx, when it
+    is installed; the stored curve otherwise), and finiteStrainPatchTest's
+    correctors for two Poisson's ratios."""
+    print("\n== Finite deformation: finiteStrainCylinder against CalculiX "
+          "(St Venant-Kirchhoff, 20 % of R in ten steps)")
+    tut = os.path.join(ROOT, "tutorials", "finiteStrainCylinder")
+    sys.path.insert(0, os.path.join(tut, "validation"))
+    compare = importlib.import_module("compareCalculix")
+    ref = None
+    if shutil.which("ccx") and shutil.which("gmsh"):
+        ref = os.path.join(WORK, "calculix-stVenantKirchhoff.csv")
+        t0 = time.time()
+        rc = subprocess.run([sys.executable, os.path.join(tut, "validation", "calculix.py"),
+                             "--work", os.path.join(WORK, "calculix"), "--csv", ref],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT).returncode
+        if rc != 0:
+            print("CalculiX failed (see %s/calculix/stVenantKirchhoff/log.ccx); "
+                  "the stored curve instead" % WORK)
+            ref = None
+        else:
+            print("CalculiX: %.0f s (%s)" % (time.time() - t0, ref))
+    else:
+        print("ccx or gmsh not installed: the stored curve "
+              "(tutorials/finiteStrainCylinder/validation/calculix-stVenantKirchhoff.csv)")
+    print("%-8s %8s %9s %9s %8s %7s" % ("refine", "cells", "max|dF|", "F(20%)", "corr",
+                                          "wall s"))
+    for level in (1, 2):
+        r = bench_case("finiteStrainCylinder_%d" % level, tut, allrun=["-refine", str(level)])
+        if not r["converged"]:
+            print("%-8d did not converge (rc=%d)" % (level, r["rc"]))
+            continue
+        res = compare.compare(r["case"], ref)
+        cells = len(foamio.cell_centres_volumes(r["case"])[1])
+        print("%-8d %8d %8.3f%% %9.4g %8d %7.1f" % (
+            level, cells, 100 * max(abs(x) for x in res["rel"]), res["F"][-1], r["ncorr"],
+            r["wall"]))
+    print("\nfiniteStrainPatchTest (lagrangeMultiplier, 80 % in one step)")
+    for nu in ("0.3", "0.4", "0.45"):
+        r = bench_case("finiteStrainPatchTest_nu%s" % nu,
+                       os.path.join(ROOT, "tutorials", "finiteStrainPatchTest"),
+                       allrun=["-nu", nu])
+        print("nu %-5s converged %-3s correctors %s" % (
+            nu, "yes" if r["converged"] else "no", r["ncorr"]))
+
+
 def main():
     global FRICTION_CATTANEO_METHODS
     import argparse
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa",
                                        "perturbedLagrange", "methods", "friction",
-                                       "unstructured"),
+                                       "unstructured", "finiteStrain"),
                     help="run one part only (convergence includes hertz's runs)")
     ap.add_argument("--cattaneo-methods", nargs="+", metavar="METHOD",
                     help="the friction part's cattaneoMindlin methods (default: %s;"
@@ -1081,6 +1133,8 @@ def main():
         friction_bench()
     if args.only in (None, "unstructured"):
         unstructured_bench()
+    if args.only in (None, "finiteStrain"):
+        finite_strain_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 
