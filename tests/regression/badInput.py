@@ -103,6 +103,10 @@ CASES = [
      ["FOAM FATAL ERROR", "Contact patch lowerTop at time 1: 10 of its 10 faces passed"
       " through the master patch upperBottom", "search distance 1 m", "deltaT",
       "searchDistance"]),
+    ("neoHookeanUnknownForm", "finiteStrainPatchTest",
+     [(MP, r"^(\s*)nu(\s+)0\.3;", r"\1nu\g<2>0.3;\n\1form        bogus;")],
+     ["FOAM FATAL IO ERROR", "Entry 'form' = bogus", "neoHookeanCoeffs", "simo",
+      "decoupled"]),
     # Contact pair entries (contactPatchTest: slave lowerTop, master upperBottom)
     ("shadowPatchMissing", "contactPatchTest",
      [("0/D", r"^(\s*)shadowPatch\s+upperBottom;", r"\1shadowPatch upperBotom;")],

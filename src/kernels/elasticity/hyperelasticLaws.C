@@ -125,6 +125,46 @@ Tangent9 neoHookeanTangent(const Eigen::Matrix3d& F, const Lame& p)
 }
 
 
+Eigen::Matrix3d decoupledNeoHookeanPK1(const Eigen::Matrix3d& F, const Lame& p)
+{
+    const Eigen::Matrix3d FinvT = F.inverse().transpose();
+    const double J = F.determinant();
+    const double a = std::pow(J, -2.0/3.0);
+    const double I1 = (F.transpose()*F).trace();
+    const double K = p.lambda + 2.0*p.mu/3.0;
+    return p.mu*a*(F - I1/3.0*FinvT) + K*(J - 1)*J*FinvT;
+}
+
+
+Tangent9 decoupledNeoHookeanTangent(const Eigen::Matrix3d& F, const Lame& p)
+{
+    const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d Fi = F.inverse();
+    const double J = F.determinant();
+    const double a = std::pow(J, -2.0/3.0);
+    const double I1 = (F.transpose()*F).trace();
+    const double K = p.lambda + 2.0*p.mu/3.0;
+
+    Tangent9 A;
+    for (int i = 0; i < 3; ++i)
+    for (int Jc = 0; Jc < 3; ++Jc)
+    for (int k = 0; k < 3; ++k)
+    for (int L = 0; L < 3; ++L)
+    {
+        A(v(i, Jc), v(k, L)) =
+            p.mu*a
+           *(
+                I(i, k)*I(Jc, L)
+              - 2.0/3.0*Fi(L, k)*(F(i, Jc) - I1/3.0*Fi(Jc, i))
+              - 2.0/3.0*F(k, L)*Fi(Jc, i)
+              + I1/3.0*Fi(Jc, k)*Fi(L, i)
+            )
+          + K*((2*J - 1)*J*Fi(L, k)*Fi(Jc, i) - (J*J - J)*Fi(Jc, k)*Fi(L, i));
+    }
+    return A;
+}
+
+
 Eigen::Matrix3d cauchyFromPK1(const Eigen::Matrix3d& P, const Eigen::Matrix3d& F)
 {
     return P*F.transpose()/F.determinant();

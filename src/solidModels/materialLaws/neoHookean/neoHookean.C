@@ -15,20 +15,37 @@ namespace solidMaterialLaws
 }
 }
 
+const Foam::Enum<Foam::solidMaterialLaws::neoHookean::form>
+Foam::solidMaterialLaws::neoHookean::formNames
+({
+    { form::simo, "simo" },
+    { form::decoupled, "decoupled" },
+});
+
 
 namespace
 {
 
-Foam::finiteStrainFields::PK1 law(const c4f::elasticity::Lame& lame)
+Foam::finiteStrainFields::PK1 law
+(
+    const c4f::elasticity::Lame& lame,
+    const Foam::label form
+)
 {
-    // An iterate's F with J <= 0 has no neo-Hookean stress (ln J): Hooke's
-    // of the same gradient keeps the corrector going (finiteStrainFields)
-    return [lame](const Eigen::Matrix3d& F) -> Eigen::Matrix3d
+    // An iterate's F with J <= 0 has no neo-Hookean stress (ln J, J^-2/3):
+    // Hooke's of the same gradient keeps the corrector going
+    // (finiteStrainFields)
+    using Form = Foam::solidMaterialLaws::neoHookean::form;
+    const bool decoupled = (form == Foam::label(Form::decoupled));
+    return [lame, decoupled](const Eigen::Matrix3d& F) -> Eigen::Matrix3d
     {
         using namespace c4f::elasticity;
         if (checkJacobian(F) == JacobianCheck::ok)
         {
-            return neoHookeanPK1(F, lame);
+            return
+                decoupled
+              ? decoupledNeoHookeanPK1(F, lame)
+              : neoHookeanPK1(F, lame);
         }
         return stress(Eigen::Matrix3d(F.transpose() - Eigen::Matrix3d::Identity()), lame);
     };
@@ -47,8 +64,24 @@ Foam::solidMaterialLaws::neoHookean::neoHookean
     solidMaterialLaw(lawType, mesh, dict),
     E_(coeffs_.get<scalar>("E")),
     nu_(coeffs_.get<scalar>("nu")),
-    lame_()
+    lame_(),
+    form_(label(form::simo))
 {
+    const word formName
+    (
+        coeffs_.lookupOrDefault<word>("form", formNames[form::simo])
+    );
+    if (!formNames.found(formName))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry 'form' = " << formName << " in " << coeffs_.name()
+            << " is invalid. Valid: " << flatOutput(formNames.sortedToc())
+            << " (simo: tau = mu (b - I) + lambda ln J I; decoupled: the"
+            << " Abaqus/CalculiX NEO HOOKE)"
+            << exit(FatalIOError);
+    }
+    form_ = label(formNames.get(formName));
+
     using namespace c4f::elasticity;
 
     const ConstantsCheck chk = checkConstants(E_, nu_);
@@ -74,7 +107,7 @@ Foam::solidMaterialLaws::neoHookean::neoHookean
 
     lame_ = lameFromEngineering(E_, nu_, false);
 
-    Info<< "    neo-Hookean: E = " << E_ << ", nu = " << nu_
+    Info<< "    neo-Hookean (" << formNames[form(form_)] << "): E = " << E_ << ", nu = " << nu_
         << " (mu = " << lame_.mu << ", lambda = " << lame_.lambda
         << "), K = 2mu + lambda = " << implicitStiffness(lame_) << endl;
 }
@@ -111,7 +144,7 @@ Foam::solidMaterialLaws::neoHookean::impK(const label patchi) const
 Foam::tmp<Foam::volSymmTensorField>
 Foam::solidMaterialLaws::neoHookean::sigma(const volTensorField& gradD) const
 {
-    return finiteStrainFields::cauchy(gradD, law(lame_));
+    return finiteStrainFields::cauchy(gradD, law(lame_, form_));
 }
 
 
@@ -122,7 +155,7 @@ Foam::solidMaterialLaws::neoHookean::sigma
     const label
 ) const
 {
-    return finiteStrainFields::cauchy(gradD, law(lame_));
+    return finiteStrainFields::cauchy(gradD, law(lame_, form_));
 }
 
 
@@ -132,7 +165,7 @@ Foam::solidMaterialLaws::neoHookean::firstPiola
     const volTensorField& gradD
 ) const
 {
-    return finiteStrainFields::firstPiola(gradD, law(lame_));
+    return finiteStrainFields::firstPiola(gradD, law(lame_, form_));
 }
 
 
@@ -143,7 +176,7 @@ Foam::solidMaterialLaws::neoHookean::firstPiola
     const label
 ) const
 {
-    return finiteStrainFields::firstPiola(gradD, law(lame_));
+    return finiteStrainFields::firstPiola(gradD, law(lame_, form_));
 }
 
 // ************************************************************************* //
