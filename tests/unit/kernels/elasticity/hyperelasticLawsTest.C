@@ -56,6 +56,14 @@ Tangent9 centralDifferences
 
 const Lame rubber = lameFromEngineering(1.0e6, 0.45, false);
 
+//- A general gradient of size ~1e-7, where every law is Hooke's
+Eigen::Matrix3d smallGradient()
+{
+    Eigen::Matrix3d G;
+    G << 1.0, -2.0, 3.0, 5.0, 7.0, -1.0, -6.0, 2.0, -4.0;
+    return 1e-7*G;
+}
+
 } // namespace
 
 
@@ -110,9 +118,7 @@ TEST(hyperelasticLaws, smallStrainLimitIsHooke)
 {
     // For |G| ~ 1e-7 both laws give Hooke's sigma to O(|G|^2)
     const Lame p = lameFromEngineering(210e9, 0.3, false);
-    Eigen::Matrix3d G;
-    G << 1.0, -2.0, 3.0, 5.0, 7.0, -1.0, -6.0, 2.0, -4.0;
-    G *= 1e-7;
+    const Eigen::Matrix3d G = smallGradient();
     const Eigen::Matrix3d F = deformationGradient(G);
     const Eigen::Matrix3d hooke = stress(G, p);
     const double tol = 1e-5*hooke.norm();
@@ -228,9 +234,7 @@ TEST(hyperelasticLaws, decoupledNeoHookean)
     );
 
     const Lame p = lameFromEngineering(210e9, 0.3, false);
-    Eigen::Matrix3d G;
-    G << 1.0, -2.0, 3.0, 5.0, 7.0, -1.0, -6.0, 2.0, -4.0;
-    G *= 1e-7;
+    const Eigen::Matrix3d G = smallGradient();
     const Eigen::Matrix3d Fs = deformationGradient(G);
     const Eigen::Matrix3d hooke = stress(G, p);
     EXPECT_LT
