@@ -319,11 +319,7 @@ bool projectsInside
     }
     const Eigen::Vector3d A = areaVector(convex);
     const double mag = A.norm();
-    double L = 0;
-    for (const Eigen::Vector3d& v : convex)
-    {
-        L = std::max(L, (v - convex[0]).norm());
-    }
+    const double L = boxDiagonal(convex);
     if (!(mag > relTol*L*L))
     {
         return false;

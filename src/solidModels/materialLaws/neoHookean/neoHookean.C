@@ -29,14 +29,14 @@ namespace
 Foam::finiteStrainFields::PK1 law
 (
     const c4f::elasticity::Lame& lame,
-    const Foam::label form
+    const Foam::solidMaterialLaws::neoHookean::form form
 )
 {
     // An iterate's F with J <= 0 has no neo-Hookean stress (ln J, J^-2/3):
     // Hooke's of the same gradient keeps the corrector going
     // (finiteStrainFields)
-    using Form = Foam::solidMaterialLaws::neoHookean::form;
-    const bool decoupled = (form == Foam::label(Form::decoupled));
+    const bool decoupled =
+        (form == Foam::solidMaterialLaws::neoHookean::form::decoupled);
     return [lame, decoupled](const Eigen::Matrix3d& F) -> Eigen::Matrix3d
     {
         using namespace c4f::elasticity;
@@ -65,7 +65,7 @@ Foam::solidMaterialLaws::neoHookean::neoHookean
     E_(coeffs_.get<scalar>("E")),
     nu_(coeffs_.get<scalar>("nu")),
     lame_(),
-    form_(label(form::simo))
+    form_(form::simo)
 {
     const word formName
     (
@@ -80,7 +80,7 @@ Foam::solidMaterialLaws::neoHookean::neoHookean
             << " Abaqus/CalculiX NEO HOOKE)"
             << exit(FatalIOError);
     }
-    form_ = label(formNames.get(formName));
+    form_ = formNames.get(formName);
 
     using namespace c4f::elasticity;
 
@@ -107,7 +107,7 @@ Foam::solidMaterialLaws::neoHookean::neoHookean
 
     lame_ = lameFromEngineering(E_, nu_, false);
 
-    Info<< "    neo-Hookean (" << formNames[form(form_)] << "): E = " << E_ << ", nu = " << nu_
+    Info<< "    neo-Hookean (" << formNames[form_] << "): E = " << E_ << ", nu = " << nu_
         << " (mu = " << lame_.mu << ", lambda = " << lame_.lambda
         << "), K = 2mu + lambda = " << implicitStiffness(lame_) << endl;
 }
