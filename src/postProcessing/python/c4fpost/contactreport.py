@@ -4,7 +4,8 @@ import os
 
 COLUMNS = ["time", "normalForce", "tangentialForce", "contactArea",
            "maxPressure", "maxPenetration", "activeFaces", "outerCorrectors",
-           "converged", "multiplierUpdates", "minGap"]
+           "converged", "multiplierUpdates", "minGap", "forceX", "forceY",
+           "forceZ"]
 
 
 def _start_time_key(name):

@@ -142,7 +142,8 @@ Foam::contactReporter::contactReporter
 :
     patch_(patch),
     history_(history),
-    corrector_(corrector)
+    corrector_(corrector),
+    lastMasterFace_()
 {}
 
 
@@ -198,6 +199,7 @@ Foam::contactReporter::row Foam::contactReporter::report() const
         const vector F(traction[facei]*A[facei]);
         const scalar Fn = F & n[facei];
         r.normalForce += Fn;
+        r.force += F;
         r.tangentialForce += mag(F - Fn*n[facei]);
         if (facei < active.size() && active[facei])
         {
@@ -215,6 +217,7 @@ Foam::contactReporter::row Foam::contactReporter::report() const
 
     reduce(r.normalForce, sumOp<scalar>());
     reduce(r.tangentialForce, sumOp<scalar>());
+    reduce(r.force, sumOp<vector>());
     reduce(r.contactArea, sumOp<scalar>());
     reduce(r.maxPressure, maxOp<scalar>());
     reduce(r.maxPenetration, maxOp<scalar>());
@@ -279,8 +282,35 @@ void Foam::contactReporter::writeCorrectorLine(Ostream& os) const
         << "  max|g| = " << gMax(mag(state.gap))
         << "  minGap = " << gapText(minGap(state.gap, state.inRange)).c_str()
         << "  masterFaceConstraints = "
-        << corrector_->coupling().nConstraintGroups()
-        << endl;
+        << corrector_->coupling().nConstraintGroups();
+
+    const labelList& hit = corrector_->pair().masterFace();
+    label moved = 0;
+    if (lastMasterFace_.size() == hit.size())
+    {
+        forAll(hit, facei)
+        {
+            if (hit[facei] != lastMasterFace_[facei])
+            {
+                ++moved;
+            }
+        }
+    }
+    lastMasterFace_ = hit;
+    os  << "  projectionsMoved = " << returnReduce(moved, sumOp<label>());
+
+    const frictionModel& friction = history_.friction();
+    if (friction.hasTangentialLaw())
+    {
+        const scalarField& stick = friction.stickFlags();
+        os  << "  stick = "
+            << returnReduce
+               (
+                   label(std::count(stick.begin(), stick.end(), 1.0)),
+                   sumOp<label>()
+               );
+    }
+    os  << endl;
 }
 
 

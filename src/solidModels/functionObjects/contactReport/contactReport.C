@@ -171,7 +171,7 @@ void Foam::functionObjects::contactReport::writeFileHeader(const label i)
         {
             "normalForce", "tangentialForce", "contactArea", "maxPressure",
             "maxPenetration", "activeFaces", "outerCorrectors", "converged",
-            "multiplierUpdates", "minGap"
+            "multiplierUpdates", "minGap", "forceX", "forceY", "forceZ"
         }
     )
     {
@@ -251,6 +251,9 @@ bool Foam::functionObjects::contactReport::write()
                 << tab << converged
                 << tab << r.multiplierUpdates
                 << tab << r.minGap
+                << tab << r.force.x()
+                << tab << r.force.y()
+                << tab << r.force.z()
                 << endl;
         }
 
