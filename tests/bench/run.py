@@ -64,6 +64,11 @@ finiteStrainCylinder's force on its mesh against a CalculiX curve made in
 this run (validation/calculix.py; the stored one without ccx),
 and finiteStrainPatchTest's correctors for nu 0.3, 0.4 and 0.45.
 
+Large sliding (`run.py --only ironing`, issue 22): shallowIroning at
+-refine 1 and 2: the die's forces at t = 1 and 1.5, the friction ratio at
+1.5, the peak-to-peak of H over the steady part, correctors per step and
+wall time (compareIroning.py's numbers).
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
@@ -1102,13 +1107,36 @@ def finite_strain_bench():
             nu, "yes" if r["converged"] else "no", r["ncorr"]))
 
 
+def ironing_bench():
+    """shallowIroning on two meshes: the published quantities
+    (compareIroning.py) with the correctors and the wall time."""
+    print("\n== Large sliding: shallowIroning (die pressed 1 mm, ironed 10 mm, mu 0.3)")
+    tut = os.path.join(ROOT, "tutorials", "shallowIroning")
+    sys.path.insert(0, os.path.join(tut, "validation"))
+    compare = importlib.import_module("compareIroning")
+    print("%-7s %6s %5s %7s %7s %7s %7s %6s %8s %8s %7s" % (
+        "refine", "cells", "conv", "V(1)", "H(1)", "V(1.5)", "H(1.5)", "H/V", "H p-p",
+        "corr/st", "wall s"))
+    for level in (1, 2):
+        r = bench_case("shallowIroning_%d" % level, tut, allrun=["-refine", str(level)])
+        res = compare.compare(r["case"])
+        smooth = [c for c in res["checks"] if c["name"].endswith("H_smooth_while_sliding")]
+        cells = len(foamio.cell_centres_volumes(r["case"])[1])
+        print("%-7d %6d %5s %7.1f %7.1f %7.1f %7.1f %6.3f %7.1f%% %8.0f %7.0f" % (
+            level, cells, "yes" if r["converged"] else "no", res["V1"], res["H1"],
+            res["V15"], res["H15"], res["ratio"], 100 * smooth[0]["value"],
+            (r["ncorr"] or 0) / max(1, r["steps"]), r["wall"]))
+    print("published H/V at 1.5: 0.30 (Poulios & Renard) to 0.53 (Fischer & Wriggers);"
+          " the issue's band 0.30-0.40, H p-p at most 5 %")
+
+
 def main():
     global FRICTION_CATTANEO_METHODS
     import argparse
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa",
                                        "perturbedLagrange", "methods", "friction",
-                                       "unstructured", "finiteStrain"),
+                                       "unstructured", "finiteStrain", "ironing"),
                     help="run one part only (convergence includes hertz's runs)")
     ap.add_argument("--cattaneo-methods", nargs="+", metavar="METHOD",
                     help="the friction part's cattaneoMindlin methods (default: %s;"
@@ -1137,6 +1165,8 @@ def main():
         unstructured_bench()
     if args.only in (None, "finiteStrain"):
         finite_strain_bench()
+    if args.only in (None, "ironing"):
+        ironing_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 

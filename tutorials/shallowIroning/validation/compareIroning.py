@@ -40,11 +40,20 @@ Checks:
     22: the published values run from 0.30 to 0.53; mortar and
     segment-to-segment codes, whose forces are smooth, 0.30 to 0.38);
   - F_x smooth while the die slides: its peak-to-peak over the steady part
-    (t = 1.3 to 1.8: 3 mm after the start of the slide, when the bulge in
-    front of the die has formed, to 2 mm before the die's front reaches
-    the foundation's end) at most 5 % of its mean. Node-to-segment codes
-    oscillate here with the period of the master's faces; a
-    segment-to-segment (mortar-like) treatment should not.
+    (t = 1.3 to 1.7: 3 mm after the start of the slide, when the bulge in
+    front of the die has formed, to 3.6 mm before the die's front reaches
+    the foundation's end, after which both forces fall) at most 5 % of its
+    mean (issue 22). Node-to-segment codes oscillate here with the period
+    of the master's faces; a segment-to-segment (mortar-like) treatment
+    should not.
+
+Measured (Allrun, the coarse mesh: 60 x 15 foundation cells, 12 x 6 die
+cells, 50 + 50 steps; 71 s): every step converged (170 to 350 correctors);
+V(1.0) = 316.1, V(1.5) = 397.9, H(1.5) = 162.6, H/V(1.5) = 0.409 (above
+the issue's band); H's peak-to-peak over the steady part 10 %: the faces
+at the die's sharp leading corner have two equilibria (one slave face
+more or less against the die's side), and H is 147 N on one and 162 N on
+the other (docs/tutorials.md#shallowironing).
 """
 import numpy as np
 
@@ -56,7 +65,7 @@ END = 2.0
 
 V_PRESS = (267.9, 332.0)     # published V at t = 1.0 [N/mm]
 RATIO_RANGE = (0.30, 0.40)   # the issue's band for H/V at t = 1.5
-STEADY = (1.3, 1.8)
+STEADY = (1.3, 1.7)
 SMOOTH = 0.05
 
 PUBLISHED = [

@@ -131,8 +131,21 @@ Foam::frictionModel::frictionModel
     state_(patch.size()),
     slipAtStepStart_(patch.size(), Zero),
     closedAtStart_(),
+    tieClosing_(false),
     multipliersConverged_(true)
-{}
+{
+    const word closing(coeffs.getOrDefault<word>("closing", "free"));
+    if (closing != "free" && closing != "tied")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid closing " << closing << " in " << coeffs.name()
+            << " (contact patch " << patch.name() << "): valid are free"
+            << " (a face that closes within a load step carries no friction"
+            << " in it) and tied (it is treated as closed at the step's"
+            << " start)" << exit(FatalIOError);
+    }
+    tieClosing_ = (closing == "tied");
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -159,7 +172,8 @@ void Foam::frictionModel::beginStep
     forAll(stick, facei)
     {
         closedAtStart_[facei] =
-            stick[facei] >= 0
+            tieClosing_
+         || stick[facei] >= 0
          || state.gap[facei] <= touchTolerance_*state.h[facei];
 
         if (stick[facei] < 0)
