@@ -242,3 +242,36 @@ def test_finite_strain_cylinder_against_calculix():
     name = "finiteStrainCylinder"
     ck.run(harness.tutorial_run(name, name, []), name)
     ck.verify()
+
+
+@pytest.mark.parametrize("rotate", [False, True], ids=["aligned", "rotated"])
+def test_finite_strain_patch_test_3d(rotate):
+    """contactPatchTest3D -finiteStrain (compareFiniteStrain3D.py): the two
+    boxes neo-Hookean, pressed to 80 % of their height in one step, nu = 0
+    (no lateral stretch): every cell's sigma'_zz, the displacement field
+    and every slave face's pressure to 1e-6 of the closed form, aligned
+    and turned 30 degrees about (1 2 3) (measured 2e-11 in 3 correctors
+    and 7e-8 in 97)."""
+    ck = harness.Checks()
+    name = "contactPatchTest3D_finiteStrain_nu0" + ("_rotated" if rotate else "")
+    args = ["-finiteStrain", "-nu", "0"] + (["-rotate"] if rotate else [])
+    ck.run(harness.tutorial_run("contactPatchTest3D", name, args), name)
+    ck.verify()
+
+
+@pytest.mark.xfail(strict=True, reason="3D with lateral stretch: 5e-5 off the closed form "
+                   "(docs/tutorials.md#contactpatchtest3d)")
+def test_finite_strain_patch_test_3d_lateral_stretch():
+    """The same with nu = 0.3 (lateral stretch s = 1.067): the boxes alone,
+    each with the other's exact state on its contact face, are exact to
+    3e-6 in 10 correctors, but with contact the iteration creeps (147
+    correctors to a residual of 3e-8, 2288 with andersonDepth 40 to 3e-9)
+    towards a state 5e-5 (sigma'_zz) to 9e-5 (pressure) off the closed
+    form; turned 30 degrees the step ends with cells turned inside out.
+    Not understood yet (issue 22); strict: the suite fails once it
+    passes."""
+    ck = harness.Checks()
+    name = "contactPatchTest3D_finiteStrain_nu0.3"
+    ck.run(harness.tutorial_run("contactPatchTest3D", name,
+                                ["-finiteStrain", "-nu", "0.3"]), name)
+    ck.verify()
