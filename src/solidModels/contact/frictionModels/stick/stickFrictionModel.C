@@ -23,11 +23,20 @@ Foam::frictionModels::stick::stick
 :
     frictionModel(patch, coeffs)
 {
-    if (coeffs.size())
+    // Only frictionModel's own entry (closing) is allowed
+    wordList unknown;
+    for (const word& key : coeffs.toc())
+    {
+        if (key != "closing")
+        {
+            unknown.append(key);
+        }
+    }
+    if (unknown.size())
     {
         FatalIOErrorInFunction(coeffs)
-            << "The friction model stick has no coefficients, but "
-            << coeffs.name() << " has " << coeffs.toc()
+            << "The friction model stick has no coefficients (closing"
+            << " apart), but " << coeffs.name() << " has " << unknown
             << " (contact patch " << patch.name() << "): remove them, or"
             << " choose coulomb with coulombCoeffs { mu ...; }"
             << exit(FatalIOError);
