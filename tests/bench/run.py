@@ -1116,6 +1116,12 @@ def ironing_contact_free(r):
     src = r["case"]
     times = foamio.times(src)
 
+    def write_list(path, values):
+        # boundaryData holds the bare list, without format_list's
+        # "nonuniform List<...>" prefix
+        with open(path, "w") as f:
+            f.write(foamio.format_list(values).split(" ", 2)[2] + "\n")
+
     def prepare(case):
         for patch in ("foundationContact", "dieContact"):
             Cf, _ = foamio.patch_geometry(src, patch)
@@ -1124,12 +1130,10 @@ def ironing_contact_free(r):
                 (t, foamio.read_patch(os.path.join(src, t, "D"), patch, len(Cf)))
                 for t in times]
             os.makedirs(base, exist_ok=True)
-            with open(os.path.join(base, "points"), "w") as f:
-                f.write(foamio.format_list(Cf).split(" ", 2)[2] + "\n")
+            write_list(os.path.join(base, "points"), Cf)
             for t, D in series:
                 os.makedirs(os.path.join(base, t), exist_ok=True)
-                with open(os.path.join(base, t, "D"), "w") as f:
-                    f.write(foamio.format_list(D).split(" ", 2)[2] + "\n")
+                write_list(os.path.join(base, t, "D"), D)
             foamio.replace_patch_entry(
                 os.path.join(case, "0", "D"), patch,
                 "        type            timeVaryingMappedFixedValue;\n"

@@ -35,8 +35,7 @@ def _split(r, want_open):
     r = dict(r)
     if r.get("checks") is not None:
         r["checks"] = [c for c in r["checks"]
-                       if c["name"].split("/")[-1] in OPEN] if want_open else \
-            [c for c in r["checks"] if c["name"].split("/")[-1] not in OPEN]
+                       if (c["name"].split("/")[-1] in OPEN) == want_open]
     return r
 
 

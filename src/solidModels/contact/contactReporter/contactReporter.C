@@ -53,6 +53,20 @@ Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& outputField
 
 // * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
+Foam::label Foam::contactReporter::countStick
+(
+    const scalarField& stick,
+    const scalar flag
+)
+{
+    return returnReduce
+    (
+        label(std::count(stick.begin(), stick.end(), flag)),
+        sumOp<label>()
+    );
+}
+
+
 Foam::scalar Foam::contactReporter::minGap
 (
     const scalarField& gap,
@@ -249,18 +263,8 @@ Foam::string Foam::contactReporter::summary() const
     {
         const scalarField& stick = friction.stickFlags();
         os  << "  F_T = " << r.tangentialForce
-            << "  stick = "
-            << returnReduce
-               (
-                   label(std::count(stick.begin(), stick.end(), 1.0)),
-                   sumOp<label>()
-               )
-            << "  slip = "
-            << returnReduce
-               (
-                   label(std::count(stick.begin(), stick.end(), 0.0)),
-                   sumOp<label>()
-               );
+            << "  stick = " << countStick(stick, 1)
+            << "  slip = " << countStick(stick, 0);
     }
     if (history_.method().updatesMultipliers())
     {
@@ -302,13 +306,7 @@ void Foam::contactReporter::writeCorrectorLine(Ostream& os) const
     const frictionModel& friction = history_.friction();
     if (friction.hasTangentialLaw())
     {
-        const scalarField& stick = friction.stickFlags();
-        os  << "  stick = "
-            << returnReduce
-               (
-                   label(std::count(stick.begin(), stick.end(), 1.0)),
-                   sumOp<label>()
-               );
+        os  << "  stick = " << countStick(friction.stickFlags(), 1);
     }
     os  << endl;
 }
