@@ -33,10 +33,13 @@ error for four meshes (each level halves the cell size), the observed
 order between levels, the correctors and the wall time per level, and the
 serial/parallel wall-time ratio on the finest mesh.
 
-Uzawa (augmentedLagrange on hertzCylinder): the max penetration over h
-and the relative multiplier change per multiplier update, falling
-geometrically, and the updates and correctors for three penalty scales
-(`run.py --only uzawa` runs this part alone).
+Uzawa (augmentedLagrange on hertzCylinder, multiplierUpdate converged):
+the max penetration over h and the relative multiplier change per
+multiplier update, falling geometrically, and the updates and correctors
+for three penalty scales; then the multiplier family's correctors against
+the Lagrange multiplier's on hertzCylinder, hertzSphere and the rotated 3D
+patch test, each method with its default multiplierUpdate and with
+`converged` (`run.py --only uzawa` runs this part alone).
 
 perturbedLagrange on contactPatchTest for penaltyScale 10, 100 and 1000:
 the stress error against the Lagrange multiplier answer, falling like
@@ -496,7 +499,10 @@ def uzawa_bench():
     runs = []
     for s in ("0.3", "1", "3"):
         def prepare(case, s=s):
+            # The update after convergence: one Uzawa update per converged
+            # inner solve, so that its rate shows
             methods.set_coeff(case, "augmentedLagrange", "penaltyScale", s)
+            methods.set_coeff(case, "augmentedLagrange", "multiplierUpdate", "converged")
         case = os.path.join(WORK, "uzawaSrc_s" + s)
         shutil.rmtree(case, ignore_errors=True)
         shutil.copytree(os.path.join(ROOT, "tutorials/hertzCylinder"), case,
@@ -524,10 +530,58 @@ def uzawa_bench():
         lines.append("| %d | %.3e | %s | %.3e |" % (j, g, "%.3f" % (g / prev) if prev else "",
                                                      dl))
         prev = g
+    lines += ["", multiplier_family_table()]
     text = "\n".join(lines)
     print(text)
     with open(os.path.join(WORK, "uzawa.md"), "w") as f:
         f.write(text + "\n")
+
+
+# The multiplier family against the Lagrange multiplier (issue 25): the
+# cases of its target, each method with its default multiplierUpdate and,
+# for those that update in every corrector, with `converged` too
+FAMILY_CASES = (("hertzCylinder", ()), ("hertzSphere", ()),
+                ("contactPatchTest3D", ("-rotate", "-nu", "0.3")))
+
+
+def multiplier_family_table():
+    """Correctors of each method with stored multipliers on the cases of
+    FAMILY_CASES, side by side with lagrangeMultiplier's in the same run."""
+    family = [m for m in methods.table().values() if "multiplierUpdate" in m.coeffs]
+    head = ["case", LM] + ["%s (%s)" % (m.name, m.coeffs["multiplierUpdate"])
+                                  for m in family]
+    others = [m for m in family if m.coeffs["multiplierUpdate"] == "corrector"]
+    head += ["%s (converged)" % m.name for m in others]
+    lines = ["Multiplier family: correctors (ratio to %s)" % LM, "",
+             "| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    for tut, args in FAMILY_CASES:
+        src = os.path.join(ROOT, "tutorials", tut)
+        tag = "family_" + tut
+
+        def cell(name, method, prepare=None):
+            case = os.path.join(WORK, name + "_src")
+            shutil.rmtree(case, ignore_errors=True)
+            shutil.copytree(src, case, ignore=shutil.ignore_patterns(
+                "[1-9]*", "processor*", "log.*", "VTK", "postProcessing", "*.png"))
+            if prepare:
+                prepare(case)
+            return bench_case(name, case, allrun=("-method", method) + tuple(args))
+
+        lm = cell(tag + "_" + LM, LM)
+
+        def fmt(r):
+            if not r["converged"]:
+                return "not converged"
+            return "%d (%.2f)" % (r["ncorr"], r["ncorr"] / float(lm["ncorr"]))
+
+        row = [tut + (" " + " ".join(args) if args else ""), "%d" % lm["ncorr"]]
+        row += [fmt(cell("%s_%s" % (tag, m.name), m.name)) for m in family]
+        row += [fmt(cell("%s_%s_converged" % (tag, m.name), m.name,
+                         lambda case, m=m: methods.set_coeff(case, m.name, "multiplierUpdate",
+                                                             "converged")))
+                for m in others]
+        lines.append("| " + " | ".join(row) + " |")
+    return "\n".join(lines)
 
 
 PL_SCALES = ("10", "100", "1000")

@@ -192,6 +192,11 @@ CASES = [
      [("0/D", r"^(\s*)method\s+lagrangeMultiplier;",
         r"\1method crossConstraint; crossConstraintCoeffs { maxUpdates 0; }")],
      ["FOAM FATAL IO ERROR", "Invalid maxUpdates 0", "at least 1", "crossConstraintCoeffs"]),
+    ("augmentedLagrangeUnknownMultiplierUpdate", "contactPatchTest",
+     [("0/D", r"^(\s*)method\s+lagrangeMultiplier;",
+        r"\1method augmentedLagrange; augmentedLagrangeCoeffs { multiplierUpdate always; }")],
+     ["FOAM FATAL IO ERROR", "Invalid multiplierUpdate always", "valid are corrector",
+      "converged", "augmentedLagrangeCoeffs"]),
     # The barrier: its coefficients, and a touching start (the tutorial
     # without Allrun's -gap: the blocks meet at y = 0.5)
     ("barrierZeroDhat", "contactPatchTest",

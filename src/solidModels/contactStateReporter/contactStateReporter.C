@@ -132,3 +132,33 @@ Foam::scalar Foam::contactStateReporter::stepLimit(volVectorField& D)
     );
     return alpha;
 }
+
+
+Foam::List<Foam::scalarField*> Foam::contactStateReporter::acceleratedStates
+(
+    volVectorField& D,
+    List<scalarField>& scales
+)
+{
+    DynamicList<scalarField*> states;
+    DynamicList<scalarField> sc;
+    forEachReporter<contactStateReporter>
+    (
+        D.boundaryFieldRef(),
+        [&](contactStateReporter& rep, const label)
+        {
+            scalarField scale;
+            scalarField* f = rep.acceleratedState(scale);
+            if (f)
+            {
+                states.append(f);
+                sc.append(scale);
+            }
+        }
+    );
+    scales = std::move(sc);
+    return List<scalarField*>(std::move(states));
+}
+
+
+// ************************************************************************* //

@@ -33,7 +33,8 @@ prescribed displacements (read from the written D):
     margin over the residual).
 
 Multipliers (methods with stored multipliers, augmentedLagrange and
-crossConstraint: contactReport's <slave>Multipliers.dat, one row per face
+crossConstraint, and a method with multiplierUpdate converged:
+contactReport's <slave>Multipliers.dat, one row per face
 and update with the multiplier the inner correctors held and the gap and
 pressure they converged to). A face separates in step t when it held a
 positive multiplier at the start of the step and holds zero at its end.
@@ -56,6 +57,10 @@ positive multiplier at the start of the step and holds zero at its end.
     not a snap to zero. On a face still coupled the new multiplier is
     the pressure the inner correctors converged to, so this checks that
     they converged to the law; on a released face it is the law's value.
+  - With multiplierUpdate corrector (augmentedLagrange's default) no
+    update follows the correctors, the multipliers move with them: at
+    t = 2 and 3 the faces with lambda > 0 in the written contactMultiplier
+    must be exactly the active faces.
     Checked on every open face and update down to 1e-6 lambda_j (below,
     the new multiplier, kPa or less, nears the resolution of the solve's
     pressure, whose residual traction on open faces is tens of Pa): the
@@ -126,8 +131,20 @@ def multiplier_checks(case, slave, method, rows, mult, Cf, area):
     active = {"%g" % r["time"]: r["activeFaces"] for r in rows}
     checks, histories, forces = [], {}, {}
     slowest, worstDecay, nDecay, forceRise = 0.0, 0.0, 0, -math.inf
+    inLoop = methods.coeff_text(case, method, "multiplierUpdate") == "corrector"
     for t in (HALF, LIFTED):
         sel = np.abs(mult["time"] - float(t)) < 1e-9
+        if inLoop:
+            # multiplierUpdate corrector: the multipliers move with the
+            # correctors, no update follows them; the written ones are the
+            # converged iterate's, positive exactly on the active faces
+            lam = foamio.read_patch(os.path.join(case, t, "contactMultiplier"), slave,
+                                    Cf.shape[0])
+            n = int(np.sum(lam > 0))
+            nA = active["%g" % float(t)]
+            checks.append(check("t%s_multiplier_faces" % t, n, nA, abs(n - nA), 0,
+                                "faces with lambda > 0 (reference: active faces)"))
+            continue
         faces = sorted(set(zip(mult["x"][sel], mult["y"][sel])))
         sep = []
         Fj = np.zeros(int(mult["update"][sel].max()) + 1)
@@ -165,9 +182,10 @@ def multiplier_checks(case, slave, method, rows, mult, Cf, area):
                             "max lambda_j+1/lambda_j down to zero, %d faces" % nSep,
                             passed=slowest < 1))
     F1 = rows[0]["normalForce"]
-    checks.append(check("unload_multiplier_force_monotone", forceRise / F1, 0.0,
-                        max(forceRise / F1, 0.0), UPDATE_FORCE_TOL,
-                        "max (F_j+1 - F_j)/F_N(t = 1) over the updates"))
+    if not inLoop:
+        checks.append(check("unload_multiplier_force_monotone", forceRise / F1, 0.0,
+                            max(forceRise / F1, 0.0), UPDATE_FORCE_TOL,
+                            "max (F_j+1 - F_j)/F_N(t = 1) over the updates"))
     if method == "crossConstraint":
         checks.append(check("separating_multipliers_exponential_decay", worstDecay, 0.0,
                             worstDecay if nDecay else math.inf, DECAY_TOL,

@@ -91,17 +91,24 @@ def _case_coeffs(case, method):
 def coeff(case, method, entry):
     """A scalar coefficient of `method` in `case`: its <method>Coeffs entry
     in 0/D where the case gives one, else the class's default."""
+    return float(coeff_text(case, method, entry))
+
+
+def coeff_text(case, method, entry):
+    """A coefficient of `method` in `case` as its text (a word such as
+    multiplierUpdate's): the <method>Coeffs entry in 0/D where the case
+    gives one, else the class's default."""
     sub = _case_coeffs(case, method)
     if sub is not None:
         try:
-            return float(foamio.entry(sub, entry))
+            return foamio.entry(sub, entry)
         except KeyError:
             pass
     defaults = get(method).coeffs
     if entry not in defaults:
         raise KeyError("%s has no entry %s in %s/0/D and no default"
                        % (method, entry, case))
-    return float(defaults[entry])
+    return defaults[entry]
 
 
 def set_coeff(case, method, entry, value):

@@ -307,6 +307,29 @@ Foam::solidContactFvPatchVectorField::gradientBoundaryCoeffs() const
 }
 
 
+Foam::scalarField* Foam::solidContactFvPatchVectorField::acceleratedState
+(
+    scalarField& scale
+)
+{
+    if (master())
+    {
+        return nullptr;
+    }
+    scalarField* lambda = history_.method().correctorMultipliers();
+    if (lambda)
+    {
+        // K/h of each slave cell [Pa/m]: a multiplier over it is the
+        // displacement that would carry it
+        const fvMesh& mesh = patch().boundaryMesh().mesh();
+        scale =
+            solidPatchTractions::impK(patch())*patch().magSf()
+           /scalarField(mesh.V().field(), patch().faceCells());
+    }
+    return lambda;
+}
+
+
 void Foam::solidContactFvPatchVectorField::updateInterfaceMatrix
 (
     solveScalarField& result,

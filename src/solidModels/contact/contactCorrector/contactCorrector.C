@@ -230,6 +230,10 @@ void Foam::contactCorrector::correct
     {
         h.friction().beginStep(lastState_, cond);
     }
+    if (!firstUpdate)
+    {
+        h.method().updateCorrectorMultipliers(lastState_, cond);
+    }
     h.method().correct(lastState_, cond);
     h.friction().correct(lastState_, cond);
 

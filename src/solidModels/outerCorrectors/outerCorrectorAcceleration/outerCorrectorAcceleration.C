@@ -6,6 +6,7 @@
 #include "processorSum.H"
 #include "Enum.H"
 #include "fixedGradientFvPatchFields.H"
+#include "contactStateReporter.H"
 
 #include <stdexcept>
 
@@ -43,6 +44,20 @@ void Foam::outerCorrectorAcceleration::gather(std::vector<double>& x) const
             {
                 x.insert(x.end(), v.cdata(), v.cdata() + vector::nComponents);
             }
+        }
+    }
+    // A contact method's multipliers updated in every corrector, each
+    // divided by its scale (a stiffness) into a length like D's
+    List<scalarField> scales;
+    const List<scalarField*> states
+    (
+        contactStateReporter::acceleratedStates(D_, scales)
+    );
+    forAll(states, k)
+    {
+        forAll(*states[k], facei)
+        {
+            x.push_back((*states[k])[facei]/scales[k][facei]);
         }
     }
 }
@@ -110,6 +125,19 @@ void Foam::outerCorrectorAcceleration::scatter(const std::vector<double>& x)
                     (v - fg.patchInternalField())*fg.patch().deltaCoeffs();
             }
             pf == v;
+        }
+    }
+
+    List<scalarField> scales;
+    const List<scalarField*> states
+    (
+        contactStateReporter::acceleratedStates(D_, scales)
+    );
+    forAll(states, k)
+    {
+        forAll(*states[k], facei)
+        {
+            (*states[k])[facei] = x[i++]*scales[k][facei];
         }
     }
 }

@@ -25,7 +25,7 @@ Foam::contactMethods::augmentedLagrange::typeTraits
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::augmented,
     true,  // finiteStrain
-    "penaltyScale 1; penetrationTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100;"
+    "penaltyScale 1; penetrationTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100; multiplierUpdate corrector;"
 };
 
 

@@ -26,7 +26,7 @@ Foam::contactMethods::crossConstraint::typeTraits
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::augmented,
     true,  // finiteStrain
-    "penaltyScale 1; penetrationTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100;"
+    "penaltyScale 1; penetrationTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100; multiplierUpdate converged;"
 };
 
 

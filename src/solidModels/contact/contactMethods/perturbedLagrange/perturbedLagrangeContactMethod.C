@@ -26,7 +26,7 @@ Foam::contactMethods::perturbedLagrange::typeTraits
     false,  // allowsSlip
     contactMethodTraits::multiplierKind::regularised,
     true,  // finiteStrain
-    "penaltyScale 10; constraintTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100;"
+    "penaltyScale 10; constraintTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100; multiplierUpdate corrector;"
 };
 
 

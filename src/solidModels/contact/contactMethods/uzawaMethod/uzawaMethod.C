@@ -34,8 +34,24 @@ Foam::contactMethods::uzawaMethod::uzawaMethod
     multiplierTol_(coeffs.get<scalar>("multiplierTolerance")),
     maxUpdates_(coeffs.get<label>("maxUpdates")),
     nUpdates_(0),
-    converged_(true)
+    converged_(true),
+    everyCorrector_(true)
 {
+    const word update
+    (
+        coeffs.get<word>("multiplierUpdate")
+    );
+    if (update != "corrector" && update != "converged")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Invalid multiplierUpdate " << update << " in "
+            << coeffs.name() << " (contact patch " << patch.name()
+            << "): valid are corrector (in every outer corrector, part of"
+            << " the accelerated iterate) and converged (once the"
+            << " correctors have converged)" << exit(FatalIOError);
+    }
+    everyCorrector_ = update == "corrector";
+
     if (!c4f::contact::validPenalty(scale_))
     {
         FatalIOErrorInFunction(coeffs)
@@ -85,6 +101,27 @@ void Foam::contactMethods::uzawaMethod::beginStep()
 {
     nUpdates_ = 0;
     converged_ = true;
+}
+
+
+void Foam::contactMethods::uzawaMethod::updateCorrectorMultipliers
+(
+    const contactSlaveState& state,
+    const contactSlaveCondition& cond
+)
+{
+    if (!everyCorrector_)
+    {
+        return;
+    }
+    scalarField& lam = lambda();
+    forAll(lam, facei)
+    {
+        lam[facei] =
+            state.inRange[facei]
+          ? max(scalar(0), newMultiplier(state, cond, facei))
+          : 0;
+    }
 }
 
 
