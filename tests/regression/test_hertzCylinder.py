@@ -153,6 +153,22 @@ def test_unload_opens_contact_and_multipliers_decay(method):
     ck.verify()
 
 
+@pytest.mark.parametrize("method", methods_where(multipliers="augmented"))
+def test_unload_multipliers_updated_once_converged(method):
+    """The same with `multiplierUpdate converged` (the Uzawa loop: an update
+    once the correctors have converged): the per-update checks of
+    compareUnload.py, the monotone decay of the separating faces'
+    multipliers and crossConstraint's exponential decay by
+    exp(-eps g/lambda) per update."""
+    ck = harness.Checks()
+    name = "hertzCylinderUnloadConverged_" + method
+    ck.run(harness.tutorial_run(
+        "hertzCylinder", name, ["-method", method, "-unload"],
+        edit=lambda case: methods.set_coeff(case, method, "multiplierUpdate", "converged")),
+        name)
+    ck.verify()
+
+
 def test_refine2_lagrangeMultiplier():
     """The second mesh level (4x the cells, 46 slave faces in contact): the
     mesh the plain iteration stalled on before the interface was

@@ -26,7 +26,7 @@ Foam::contactMethods::crossConstraint::typeTraits
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::augmented,
     true,  // finiteStrain
-    "penaltyScale 1; penetrationTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100; multiplierUpdate converged;"
+    "penaltyScale 1; penetrationTolerance 1e-3; multiplierTolerance 1e-6; maxUpdates 100; multiplierUpdate corrector;"
 };
 
 
@@ -47,13 +47,23 @@ Foam::scalar Foam::contactMethods::crossConstraint::newMultiplier
     const label facei
 ) const
 {
+    // A free face that penetrates takes none: it enters with the
+    // law about lambda = 0 (the penalty), as augmentedLagrange's does. At a
+    // converged state no free face penetrates, but in an iterate updated
+    // in every corrector it may lie deep (the unconstrained first solve),
+    // and the penalty's value as lambda plus the law's own eps (-g) on
+    // top pushed the bodies apart, then let them through, in turn
+    if (cond.coupled[facei])
+    {
+        return state.reaction[facei];
+    }
     return
-        cond.coupled[facei]
-      ? state.reaction[facei]
-      : c4f::contact::crossConstraintPressure
+        state.gap[facei] > 0
+      ? c4f::contact::crossConstraintPressure
         (
             state.gap[facei], lambda()[facei], eps(state, facei)
-        ).pressure;
+        ).pressure
+      : 0;
 }
 
 
