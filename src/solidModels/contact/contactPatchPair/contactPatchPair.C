@@ -494,6 +494,7 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
     overlapGaps_.setSize(slave_.size());
     overlapCentroids_.setSize(slave_.size());
     slaveCentres_ = x;
+    slaveNormals_ = slave_.nf();
 
     forAll(overlapFaces_, facei)
     {
@@ -512,6 +513,7 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
         // oriented as its current polygon
         const Eigen::Vector3d xs(c4fConvert::toEigen(x[facei]));
         const Eigen::Vector3d ns(c4f::transfer::polygonPlane(poly).normal);
+        slaveNormals_[facei] = c4fConvert::toFoam(Eigen::Vector3d(ns.normalized()));
         const auto faceGap = [&](const label j, const Eigen::Vector3d& c)
         {
             return c4f::contact::planeGap

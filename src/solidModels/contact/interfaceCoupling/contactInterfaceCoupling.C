@@ -23,20 +23,20 @@ Foam::tmp<Foam::Field<Type>> Foam::contactInterfaceCoupling::masterCellValues
 }
 
 
-Foam::vector Foam::contactInterfaceCoupling::implicitWeights(const vector& n)
+Foam::vector Foam::contactInterfaceCoupling::implicitWeights
+(
+    const vector& n,
+    const scalar minWeight
+)
 {
     const scalar n1 = mag(n.x()) + mag(n.y()) + mag(n.z());
-    return max
-    (
-        n1*cmptMag(n),
-        vector::uniform(minImplicitWeight_)
-    );
+    return max(n1*cmptMag(n), vector::uniform(minWeight));
 }
 
 
 Foam::vector Foam::contactInterfaceCoupling::faceWeights(const label i) const
 {
-    return tied_[i] ? vector::one : implicitWeights(normal_[i]);
+    return tied_[i] ? vector::one : implicitWeights(normal_[i], minWeight_[i]);
 }
 
 
@@ -76,6 +76,13 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
 
     nMaster_ = pair_.nMasterFaces();
     normal_ = in.normal;
+    const vectorField& ns = pair_.slaveNormals();
+    minWeight_.setSize(slave.size());
+    forAll(minWeight_, i)
+    {
+        minWeight_[i] =
+            mag(ns[i] + normal_[i]) > parallelTol_ ? minImplicitWeight_ : 0;
+    }
     explicitForce_.setSize(slave.size());
     tied_.setSize(slave.size());
     forAll(tied_, i)
