@@ -513,7 +513,8 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
         // oriented as its current polygon
         const Eigen::Vector3d xs(c4fConvert::toEigen(x[facei]));
         const Eigen::Vector3d ns(c4f::transfer::polygonPlane(poly).normal);
-        slaveNormals_[facei] = c4fConvert::toFoam(Eigen::Vector3d(ns.normalized()));
+        slaveNormals_[facei] =
+            c4fConvert::toFoam(Eigen::Vector3d(ns.normalized()));
         const auto faceGap = [&](const label j, const Eigen::Vector3d& c)
         {
             return c4f::contact::planeGap

@@ -36,7 +36,10 @@ Foam::vector Foam::contactInterfaceCoupling::implicitWeights
 
 Foam::vector Foam::contactInterfaceCoupling::faceWeights(const label i) const
 {
-    return tied_[i] ? vector::one : implicitWeights(normal_[i], minWeight_[i]);
+    return
+        tied_[i]
+      ? vector::one
+      : implicitWeights(normal_[i], minWeight_[i]);
 }
 
 

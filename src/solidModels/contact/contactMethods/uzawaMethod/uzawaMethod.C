@@ -35,13 +35,10 @@ Foam::contactMethods::uzawaMethod::uzawaMethod
     maxUpdates_(coeffs.get<label>("maxUpdates")),
     nUpdates_(0),
     converged_(true),
-    everyCorrector_(true)
+    everyCorrector_(coeffs.get<word>("multiplierUpdate") == "corrector")
 {
-    const word update
-    (
-        coeffs.get<word>("multiplierUpdate")
-    );
-    if (update != "corrector" && update != "converged")
+    const word update(coeffs.get<word>("multiplierUpdate"));
+    if (!everyCorrector_ && update != "converged")
     {
         FatalIOErrorInFunction(coeffs)
             << "Invalid multiplierUpdate " << update << " in "
@@ -50,7 +47,6 @@ Foam::contactMethods::uzawaMethod::uzawaMethod
             << " the accelerated iterate) and converged (once the"
             << " correctors have converged)" << exit(FatalIOError);
     }
-    everyCorrector_ = update == "corrector";
 
     if (!c4f::contact::validPenalty(scale_))
     {
@@ -104,23 +100,35 @@ void Foam::contactMethods::uzawaMethod::beginStep()
 }
 
 
+Foam::tmp<Foam::scalarField>
+Foam::contactMethods::uzawaMethod::newMultipliers
+(
+    const contactSlaveState& state,
+    const contactSlaveCondition& cond
+) const
+{
+    tmp<scalarField> tlam(new scalarField(lambda().size(), 0));
+    scalarField& lam = tlam.ref();
+    forAll(lam, facei)
+    {
+        if (state.inRange[facei])
+        {
+            lam[facei] = max(scalar(0), newMultiplier(state, cond, facei));
+        }
+    }
+    return tlam;
+}
+
+
 void Foam::contactMethods::uzawaMethod::updateCorrectorMultipliers
 (
     const contactSlaveState& state,
     const contactSlaveCondition& cond
 )
 {
-    if (!everyCorrector_)
+    if (everyCorrector_)
     {
-        return;
-    }
-    scalarField& lam = lambda();
-    forAll(lam, facei)
-    {
-        lam[facei] =
-            state.inRange[facei]
-          ? max(scalar(0), newMultiplier(state, cond, facei))
-          : 0;
+        lambda() = newMultipliers(state, cond);
     }
 }
 
@@ -132,7 +140,7 @@ bool Foam::contactMethods::uzawaMethod::updateMultipliers
 )
 {
     scalarField& lam = lambda();
-    scalarField lamNew(lam.size(), 0);
+    const scalarField lamNew(newMultipliers(state, cond));
 
     scalar maxViolation = 0;
     scalar dLambda = 0;
@@ -141,7 +149,6 @@ bool Foam::contactMethods::uzawaMethod::updateMultipliers
     {
         if (state.inRange[facei])
         {
-            lamNew[facei] = max(scalar(0), newMultiplier(state, cond, facei));
             maxViolation = max
             (
                 maxViolation,
