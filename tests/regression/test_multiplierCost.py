@@ -4,8 +4,8 @@ method whose stored multipliers are updated in every outer corrector
 in at most 1.3 times the correctors of lagrangeMultiplier on the same case.
 
 Before, each update waited for the correctors to converge and restarted
-Anderson's history: hertzCylinder took 209 (augmentedLagrange), 212
-(crossConstraint) and 211 (perturbedLagrange) correctors against
+Anderson's history: hertzCylinder took 209 (augmentedLagrange), 208
+(crossConstraint) and 196 (perturbedLagrange) correctors against
 lagrangeMultiplier's 50; measured now 48, 48 and 49, the rotated 3D patch
 test (nu 0.3) 70, 69 and 69 against 71, hertzSphere 47, 49 and 47
 against 48. The methods are those whose default
