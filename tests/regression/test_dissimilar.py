@@ -6,7 +6,7 @@ coarse slave. The decomposed runs are in test_parallel.py."""
 import pytest
 
 import harness
-from c4fpost import methods
+from c4fpost import contactreport, methods
 import runs
 from harness import methods_with_coeff
 
@@ -26,6 +26,49 @@ def test_steelAluminium_hertz(method):
     ck.verify()
 
 
+# What the roles may change on one body's pressure: the issue's target
+# (0.5 % of p_max and of a); measured 0.38 % and 0.15 % on this mesh,
+# 0.19 % and 0.16 % at -refine 2
+ROLES_TOL = 0.005
+# The penetration the constraint leaves where it is posed per block face:
+# the gap it closes is the mean over each block face's span (round-off of
+# the 1e-7 m the slave faces' own gaps differ from it by, h^2/8R)
+ROLES_PENETRATION = 1e-9
+
+
+def roles_checks(ck, name, blk, cyl, method):
+    """The near-rigid indenter's roles compared on each body: the pressure
+    of one patch is the same whichever body is the slave (p_max and the
+    ellipse fit's a within ROLES_TOL), and each run's contactReport
+    maxPenetration (the gap the constraint closes) is at most
+    ROLES_PENETRATION. Across the bodies the pressures differ by the block
+    surface's strain, the same in both runs (compareHertz.py, "Which
+    body's pressure"). A method of the penalty family regularises with
+    eps = s K/h of the slave, 1000 times stiffer with the cylinder the
+    slave, so its answer depends on the roles by design (0.57 % of p_max
+    for the penalty and perturbedLagrange): it is held to compareHertz's
+    P0_TOL, its penetration not checked."""
+    compareHertz = harness.validation("hertzCylinder", "compareHertz")
+    exact = methods.get(method).answer == "exact"
+    tol = ROLES_TOL if exact else compareHertz.P0_TOL
+    for patch in compareHertz.PATCHES:
+        b = compareHertz.compare(blk["case"], estar="block", patch=patch)
+        c = compareHertz.compare(cyl["case"], estar="block", patch=patch)
+        pb, pc = max(b["p"]), max(c["p"])
+        err = abs(pc - pb) / pb
+        ck.add("%s/%s/peak_pressure" % (name, patch), err <= tol, pc, pb, err, tol,
+               note="(cylinder slave against block slave, relative)")
+        err = abs(c["aFit"] - b["aFit"]) / b["aFit"]
+        ck.add("%s/%s/half_width_fit" % (name, patch), err <= tol, c["aFit"], b["aFit"],
+               err, tol, note="(ellipse fit's a, relative)")
+    if exact:
+        for r, slave in ((blk, "blockContact"), (cyl, "cylinderContact")):
+            row = contactreport.last_row(r["case"], slave) or {}
+            pen = row.get("maxPenetration", float("inf"))
+            ck.add("%s/%s/max_penetration" % (name, slave), pen <= ROLES_PENETRATION, pen, 0,
+                   pen, ROLES_PENETRATION, note="[m] (contactReport)")
+
+
 @pytest.mark.parametrize("method", [pytest.param(m, marks=pytest.mark.xdist_group(
     "nearRigid_" + m)) for m in REPRESENTATIVES])
 def test_nearRigid_indenter_either_slave_agrees(method):
@@ -34,26 +77,38 @@ def test_nearRigid_indenter_either_slave_agrees(method):
     The stiff cylinder's faces (0.267 mm) are finer than the block's
     (0.35 mm): constrained per slave face its pressure oscillated (p0 2.5 x
     Hertz, the mortar inf-sup failure); it is constrained per block face
-    (constraintFaces auto). Both roles give the same answer: peak pressure
-    within compareHertz's tolerance (P0_TOL) of each other, the contact
-    half-widths within A_TOL_FACES of the coarser slave faces (the
-    one-sided resolution of each measure)."""
+    (constraintFaces auto). The roles do not matter: each body's pressure
+    is the same whichever is the slave (roles_checks)."""
     ck = harness.Checks()
     blk, cyl = runs.near_rigid(method, "block"), runs.near_rigid(method, "cylinder")
     ok = ck.run(blk, "hertzCylinder_nearRigid_blockSlave_" + method)
     ok = ck.run(cyl, "hertzCylinder_nearRigid_cylinderSlave_" + method) and ok
     name = "hertzCylinder_nearRigid_roles_" + method
     if ok:
-        compareHertz = harness.validation("hertzCylinder", "compareHertz")
-        b = compareHertz.compare(blk["case"], estar="block")
-        c = compareHertz.compare(cyl["case"], estar="block")
-        pb, pc = max(b["p"]), max(c["p"])
-        err = abs(pc - pb) / pb
-        ck.add(name + "/peak_pressure", err <= compareHertz.P0_TOL, pc, pb, err,
-               compareHertz.P0_TOL, note="(cylinder slave against block slave)")
-        tolA = compareHertz.A_TOL_FACES * max(b["hA"], c["hA"])
-        ck.add(name + "/contact_half_width", abs(c["aNum"] - b["aNum"]) <= tolA,
-               c["aNum"], b["aNum"], abs(c["aNum"] - b["aNum"]), tolA, note="[m]")
+        roles_checks(ck, name, blk, cyl, method)
+    else:
+        ck.add(name + "/compared", False, note="a run failed")
+    ck.verify()
+
+
+@pytest.mark.parametrize("method", [pytest.param(m, marks=pytest.mark.xdist_group(
+    "nearRigid_" + m)) for m in methods.names() if methods.get(m).multipliers != "none"])
+def test_nearRigid_multiplier_family_either_slave(method):
+    """The methods with stored multipliers on the near-rigid indenter with
+    either body the slave: they converge (with the cylinder the slave they
+    stopped after 100 multiplier updates while their penetration test
+    measured each slave face's own gap, 3.2e-7 m = 1.2e-3 h, which the
+    constraint posed per block face does not close; it takes the gap the
+    constraint closes now, and a face constrained per block face takes
+    the law's update at that gap: 65, 60 and 77 correctors against LM's
+    62), Hertz's checks, and the roles checks."""
+    ck = harness.Checks()
+    blk, cyl = runs.near_rigid(method, "block"), runs.near_rigid(method, "cylinder")
+    ok = ck.run(blk, "hertzCylinder_nearRigid_blockSlave_" + method)
+    ok = ck.run(cyl, "hertzCylinder_nearRigid_cylinderSlave_" + method) and ok
+    name = "hertzCylinder_nearRigid_roles_" + method
+    if ok:
+        roles_checks(ck, name, blk, cyl, method)
     else:
         ck.add(name + "/compared", False, note="a run failed")
     ck.verify()

@@ -101,6 +101,21 @@ Foam::contactSlaveState Foam::contactCorrector::state
 
     contactSlaveState s;
     s.gap = pair_->gap();
+    // The groups are the last coupling's (none before the first): at a
+    // converged state the same as the next one's
+    if (coupling_.valid())
+    {
+        s.constraintGap =
+            coupling_->groups().constraintGap
+            (
+                s.gap, h.cond().coupled, s.grouped
+            );
+    }
+    else
+    {
+        s.constraintGap = s.gap;
+        s.grouped = boolList(s.gap.size(), false);
+    }
     s.normal = pair_->normal();
     s.K = solidPatchTractions::impK(patch);
     s.h = cellSizeNormal(patch);

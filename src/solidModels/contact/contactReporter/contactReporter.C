@@ -200,6 +200,10 @@ Foam::contactReporter::row Foam::contactReporter::report() const
     (
         searched ? corrector_->pair().normal() : vectorField(-patch_.nf())
     );
+    // The gap the constraint closes (per master face where it is posed
+    // there), that of the state the last corrector started from
+    const scalarField& cg = corrector_->lastState().constraintGap;
+    const scalarField& penetrationGap = cg.size() == A.size() ? cg : gap;
     const vectorField& traction = history_.traction();
     const scalarField& pressure = history_.pressure();
     const boolList& active = history_.cond().active;
@@ -221,7 +225,7 @@ Foam::contactReporter::row Foam::contactReporter::report() const
             ++r.activeFaces;
         }
         r.maxPressure = max(r.maxPressure, pressure[facei]/ratio[facei]);
-        r.maxPenetration = max(r.maxPenetration, -gap[facei]);
+        r.maxPenetration = max(r.maxPenetration, -penetrationGap[facei]);
     }
 
     r.minGap =

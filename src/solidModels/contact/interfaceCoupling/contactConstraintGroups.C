@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "contactConstraintGroups.H"
+#include "vector2DField.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -102,6 +103,81 @@ Foam::label Foam::contactConstraintGroups::nGroups() const
         n += (k > 0);
     }
     return n;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::contactConstraintGroups::constraintGap
+(
+    const scalarField& gap,
+    const boolList& coupled,
+    boolList& groupedFace
+) const
+{
+    tmp<scalarField> tcg(new scalarField(gap));
+    groupedFace.setSize(gap.size());
+    groupedFace = false;
+    if (!any_)
+    {
+        return tcg;
+    }
+    scalarField& cg = tcg.ref();
+
+    const labelListList& faces = pair_.overlapFaces();
+    const List<scalarList>& weights = pair_.overlapWeights();
+    const List<scalarList>& gaps = pair_.overlapGaps();
+    const scalarField& magSf = pair_.slavePatch().magSf();
+
+    // Per gathered master face, over processors: sum_s A_s g_s and A_j
+    Field<vector2D> sums(kbar_.size(), Zero);
+    forAll(faces, i)
+    {
+        if (i < coupled.size() && coupled[i])
+        {
+            forAll(faces[i], k)
+            {
+                const label j = faces[i][k];
+                if (kbar_[j] > 0)
+                {
+                    const scalar A = weights[i][k]*magSf[i];
+                    sums[j] += vector2D(A*gaps[i][k], A);
+                }
+            }
+        }
+    }
+    sums = pair_.sumOverProcessors(sums, tag_);
+
+    // A face that is not coupled is not constrained: its own gap
+    forAll(faces, i)
+    {
+        if (i >= coupled.size() || !coupled[i])
+        {
+            continue;
+        }
+        scalar sumW = 0;
+        scalar sumWg = 0;
+        bool grouped = false;
+        forAll(faces[i], k)
+        {
+            const label j = faces[i][k];
+            const scalar w = weights[i][k];
+            sumW += w;
+            if (kbar_[j] > 0 && sums[j].y() > 0)
+            {
+                sumWg += w*sums[j].x()/sums[j].y();
+                grouped = true;
+            }
+            else
+            {
+                sumWg += w*gap[i];
+            }
+        }
+        if (grouped && sumW > 0)
+        {
+            cg[i] = sumWg/sumW;
+            groupedFace[i] = true;
+        }
+    }
+    return tcg;
 }
 
 

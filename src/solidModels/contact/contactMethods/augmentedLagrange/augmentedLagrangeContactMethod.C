@@ -46,7 +46,22 @@ Foam::scalar Foam::contactMethods::augmentedLagrange::newMultiplier
     const label facei
 ) const
 {
-    return cond.active[facei] ? state.reaction[facei] : 0;
+    if (!cond.active[facei])
+    {
+        return 0;
+    }
+    // A face constrained per master face carries the mean of its master
+    // faces' shared pressures, not its own law's value: its reaction as
+    // lambda left the groups' mean gap at C (lambda_bar - p_j), 3e-8 m
+    // with the near-rigid cylinder the slave. The law at the gap the
+    // constraint closes has the fixed point where that gap is zero
+    return
+        state.grouped[facei]
+      ? c4f::contact::uzawaUpdate
+        (
+            lambda()[facei], state.constraintGap[facei], eps(state, facei)
+        )
+      : state.reaction[facei];
 }
 
 
@@ -60,7 +75,7 @@ void Foam::contactMethods::augmentedLagrange::correct
 
     cond.nChanged = 0;
 
-    forAll(state.gap, facei)
+    forAll(state.constraintGap, facei)
     {
         const scalar e = eps(state, facei);
         bool active = false;
@@ -72,7 +87,7 @@ void Foam::contactMethods::augmentedLagrange::correct
                 state, cond, facei,
                 c4f::contact::augmentedLagrangePressure
                 (
-                    state.gap[facei], lam[facei], e
+                    state.constraintGap[facei], lam[facei], e
                 ).pressure > 0
             );
         }

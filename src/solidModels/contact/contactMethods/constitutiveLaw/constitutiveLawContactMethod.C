@@ -88,9 +88,9 @@ void Foam::contactMethods::constitutiveLaw::correct
 {
     cond.nChanged = 0;
 
-    forAll(state.gap, facei)
+    forAll(state.constraintGap, facei)
     {
-        const scalar g = state.gap[facei];
+        const scalar g = state.constraintGap[facei];
 
         bool active = false;
         if (state.inRange[facei])

@@ -61,13 +61,13 @@ void Foam::contactMethods::directElimination::correct
 {
     cond.nChanged = 0;
 
-    forAll(state.gap, facei)
+    forAll(state.constraintGap, facei)
     {
         const bool active =
             state.inRange[facei]
          && c4f::contact::directEliminationActive
             (
-                cond.active[facei], state.reaction[facei], state.gap[facei]
+                cond.active[facei], state.reaction[facei], state.constraintGap[facei]
             );
 
         cond.pressure[facei] = carriedPressure(state, cond, facei);

@@ -57,7 +57,7 @@ void Foam::contactMethods::lagrangeMultiplier::correct
 {
     cond.nChanged = 0;
 
-    forAll(state.gap, facei)
+    forAll(state.constraintGap, facei)
     {
         // An inactive face was traction-free: its multiplier is zero, not
         // the solver-tolerance residue of its reaction
@@ -68,7 +68,7 @@ void Foam::contactMethods::lagrangeMultiplier::correct
 
         const bool active =
             state.inRange[facei]
-         && c4f::contact::activeByPrimalDual(lambda, state.gap[facei], c);
+         && c4f::contact::activeByPrimalDual(lambda, state.constraintGap[facei], c);
 
         cond.setActive(facei, active);
 

@@ -68,7 +68,7 @@ void Foam::contactMethods::nitsche::correct
 {
     cond.nChanged = 0;
 
-    forAll(state.gap, facei)
+    forAll(state.constraintGap, facei)
     {
         const vector& n = state.normal[facei];
         const scalar ss = n & state.cellStress[facei] & n;
@@ -87,7 +87,7 @@ void Foam::contactMethods::nitsche::correct
             gamma0_, state.stiffness[facei]
         );
         const c4f::contact::NitscheValue v =
-            c4f::contact::nitschePressure(state.gap[facei], sigmaN, gamma);
+            c4f::contact::nitschePressure(state.constraintGap[facei], sigmaN, gamma);
 
         cond.pressure[facei] = carriedPressure(state, cond, facei);
         cond.clearLaw(facei);

@@ -64,7 +64,7 @@ Foam::tmp<Foam::scalarField> Foam::contactMethods::penalty::epsN
     const contactSlaveState& state
 ) const
 {
-    tmp<scalarField> teps(new scalarField(state.gap.size()));
+    tmp<scalarField> teps(new scalarField(state.constraintGap.size()));
     scalarField& eps = teps.ref();
     forAll(eps, facei)
     {
@@ -84,7 +84,7 @@ void Foam::contactMethods::penalty::correct
 
     cond.nChanged = 0;
 
-    forAll(state.gap, facei)
+    forAll(state.constraintGap, facei)
     {
         bool active = false;
         cond.clearLaw(facei);
@@ -101,7 +101,7 @@ void Foam::contactMethods::penalty::correct
                 state, cond, facei,
                 c4f::contact::penaltyPressure
                 (
-                    state.gap[facei], eps[facei]
+                    state.constraintGap[facei], eps[facei]
                 ).pressure > 0
             );
 
@@ -114,7 +114,7 @@ void Foam::contactMethods::penalty::correct
             // the forces balance in every corrector
             const scalar pNew = c4f::contact::penaltyPressure
             (
-                state.gap[facei], eps[facei]
+                state.constraintGap[facei], eps[facei]
             ).pressure;
 
             const scalar p =

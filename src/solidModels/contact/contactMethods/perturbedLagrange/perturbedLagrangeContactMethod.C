@@ -71,7 +71,7 @@ Foam::scalar Foam::contactMethods::perturbedLagrange::newMultiplier
       ? state.reaction[facei]
       : c4f::contact::perturbedLagrangeUpdate
         (
-            lambda()[facei], state.gap[facei], eps(state, facei),
+            lambda()[facei], state.constraintGap[facei], eps(state, facei),
             state.stiffness[facei]
         );
 }
@@ -86,7 +86,7 @@ Foam::scalar Foam::contactMethods::perturbedLagrange::constraintViolation
 {
     const scalar r = c4f::contact::perturbedLagrangeResidual
     (
-        lambdaNew, state.gap[facei], eps(state, facei)
+        lambdaNew, state.constraintGap[facei], eps(state, facei)
     );
 
     // A released face (lambda = 0) satisfies the constraint as an
@@ -105,7 +105,7 @@ void Foam::contactMethods::perturbedLagrange::correct
 
     cond.nChanged = 0;
 
-    forAll(state.gap, facei)
+    forAll(state.constraintGap, facei)
     {
         const scalar e = eps(state, facei);
         const scalar Kc = state.stiffness[facei];
@@ -118,7 +118,7 @@ void Foam::contactMethods::perturbedLagrange::correct
                 state, cond, facei,
                 c4f::contact::perturbedLagrangeStepPressure
                 (
-                    state.gap[facei], lam[facei], e, Kc
+                    state.constraintGap[facei], lam[facei], e, Kc
                 ).pressure > 0
             );
         }

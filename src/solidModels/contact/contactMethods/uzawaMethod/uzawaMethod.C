@@ -89,7 +89,7 @@ Foam::scalar Foam::contactMethods::uzawaMethod::constraintViolation
     const scalar
 ) const
 {
-    return max(-state.gap[facei], scalar(0));
+    return max(-state.constraintGap[facei], scalar(0));
 }
 
 
