@@ -41,6 +41,12 @@ the Lagrange multiplier's on hertzCylinder, hertzSphere and the rotated 3D
 patch test, each method with its default multiplierUpdate and with
 `converged` (`run.py --only uzawa` runs this part alone).
 
+Roles (`run.py --only roles`, issue 25): hertzCylinder with the near-rigid
+cylinder, the block or the cylinder the slave, for the Lagrange
+multiplier, the penalty and the methods with stored multipliers at two
+mesh levels: each body's p_max and a with either role, the penetration
+the constraint leaves, the correctors; markdown in roles.md.
+
 perturbedLagrange on contactPatchTest for penaltyScale 10, 100 and 1000:
 the stress error against the Lagrange multiplier answer, falling like
 1/eps, the difference to the penalty run with the same eps, and the
@@ -541,7 +547,8 @@ def uzawa_bench():
 # cases of its target, each method with its default multiplierUpdate and,
 # for those that update in every corrector, with `converged` too
 FAMILY_CASES = (("hertzCylinder", ()), ("hertzSphere", ()),
-                ("contactPatchTest3D", ("-rotate", "-nu", "0.3")))
+                ("contactPatchTest3D", ("-rotate", "-nu", "0.3")),
+                ("hertzCylinder", ("-materials", "nearRigidCylinder", "-slave", "cylinder")))
 
 
 def multiplier_family_table():
@@ -556,7 +563,7 @@ def multiplier_family_table():
              "| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
     for tut, args in FAMILY_CASES:
         src = os.path.join(ROOT, "tutorials", tut)
-        tag = "family_" + tut
+        tag = "family_" + tut + "".join("_" + a.lstrip("-") for a in args)
 
         def cell(name, method, prepare=None):
             case = os.path.join(WORK, name + "_src")
@@ -582,6 +589,85 @@ def multiplier_family_table():
                 for m in others]
         lines.append("| " + " | ".join(row) + " |")
     return "\n".join(lines)
+
+
+# --------------------------------------------------------------------------
+# Roles (issue 25): the near-rigid indenter with either body the slave
+ROLES_LEVELS = (1, 2)
+
+
+def surface_strain(case, patch="blockContact"):
+    """e_xx of `patch`'s surface at its face nearest x = 0 (the symmetry
+    plane), from the face values of D written at the latest time."""
+    Cf, _ = foamio.patch_geometry(case, patch)
+    D = foamio.read_patch(os.path.join(case, foamio.latest_time(case), "D"), patch, len(Cf))
+    o = np.argsort(Cf[:, 0])
+    return float(np.gradient(D[o, 0], Cf[o, 0])[0])
+
+
+def roles_bench():
+    """hertzCylinder -materials nearRigidCylinder with the block and with
+    the cylinder as the slave, for the Lagrange multiplier, the penalty
+    and the methods with stored multipliers, at two mesh levels: each
+    body's pressure (p_max and the ellipse fit's a, compareHertz.compare
+    on that patch) with the cylinder the slave against the block the
+    slave; the cylinder-slave run's maxPenetration (the gap its constraint
+    closes, contactReport) and minGap (the slave faces' own search gap);
+    the correctors of both; and the slave-to-slave ratio of the peaks
+    (cylinder slave's over block slave's) against 1/(1 + e_xx), e_xx the
+    block surface's strain at the centre. Markdown in WORK/roles.md."""
+    print("\n== Roles: hertzCylinder nearRigidCylinder, the block or the cylinder the slave")
+    table = methods.table()
+    chosen = [LM, PENALTY] + [m for m in table if table[m].multipliers != "none"]
+    head = ("method", "faces across a (block)", "correctors block / cylinder slave",
+            "block: p_max, a_fit", "cylinder: p_max, a_fit",
+            "maxPenetration / minGap [m] (cylinder slave)",
+            "slave peaks: cylinder / block", "1/(1 + e_xx)")
+    lines = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    for level in ROLES_LEVELS:
+        for method in chosen:
+            r = {}
+            for slave in ("block", "cylinder"):
+                args = ["-method", method, "-materials", "nearRigidCylinder", "-slave", slave]
+                if level > 1:
+                    args += ["-refine", str(level)]
+                r[slave] = bench_case("roles_%s_%sSlave_r%d" % (method, slave, level),
+                                      os.path.join(ROOT, "tutorials/hertzCylinder"),
+                                      allrun=args)
+            if not all(x["converged"] for x in r.values()):
+                lines.append("| %s | level %d | %s | not converged | | | | |" % (
+                    method, level, " / ".join(str(x["ncorr"]) for x in r.values())))
+                continue
+            cells = []
+            for patch in compareHertz.PATCHES[::-1]:
+                b = compareHertz.compare(r["block"]["case"], estar="block", patch=patch)
+                c = compareHertz.compare(r["cylinder"]["case"], estar="block", patch=patch)
+                cells.append("%+.2f %%, %+.2f %%" % (100 * (max(c["p"]) / max(b["p"]) - 1),
+                                                    100 * (c["aFit"] / b["aFit"] - 1)))
+            sb = compareHertz.compare(r["block"]["case"], estar="block")
+            sc = compareHertz.compare(r["cylinder"]["case"], estar="block")
+            row = contactreport.last_row(r["cylinder"]["case"], "cylinderContact") or {}
+            exx = surface_strain(r["block"]["case"])
+            lines.append("| %s | %.1f | %d / %d | %s | %s | %.2g / %.2g | %.4f | %.4f |" % (
+                method, sb["aH"] / sb["hA"], r["block"]["ncorr"], r["cylinder"]["ncorr"],
+                cells[0], cells[1], row.get("maxPenetration", float("nan")),
+                row.get("minGap", float("nan")), max(sc["p"]) / max(sb["p"]), 1 / (1 + exx)))
+    notes = [
+        "",
+        "Each body's pressure with the cylinder the slave against the same body's with the"
+        " block the slave (relative differences). The issue's target: within 0.5 % of p_max"
+        " and a, penetration at most 1e-9 m. maxPenetration is the gap the constraint closes"
+        " (per block face: constraintFaces auto), minGap the cylinder faces' own search gap,"
+        " which differs from it by the block surface's chord between its points. The penalty"
+        " and perturbedLagrange regularise with eps = s K/h of the slave (1000 times stiffer"
+        " with the cylinder the slave): their answers depend on the roles by design. The"
+        " slave-to-slave ratio of the peaks is each body's pressure per its own area: the"
+        " block's surface contracts by e_xx under the indenter (the same in both runs).",
+    ]
+    text = "\n".join(lines + notes)
+    print(text, flush=True)
+    with open(os.path.join(WORK, "roles.md"), "w") as f:
+        f.write("# contact4foam roles (make bench)\n\n" + text + "\n")
 
 
 PL_SCALES = ("10", "100", "1000")
@@ -1249,7 +1335,7 @@ def main():
     global FRICTION_CATTANEO_METHODS
     import argparse
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
-    ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa",
+    ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa", "roles",
                                        "perturbedLagrange", "methods", "friction",
                                        "unstructured", "finiteStrain", "ironing"),
                     help="run one part only (convergence includes hertz's runs)")
@@ -1270,6 +1356,8 @@ def main():
         plate_bench()
     if args.only in (None, "uzawa"):
         uzawa_bench()
+    if args.only in (None, "roles"):
+        roles_bench()
     if args.only in (None, "perturbedLagrange"):
         perturbed_bench()
     if args.only in (None, "methods"):

@@ -100,7 +100,7 @@ def test_nearRigid_multiplier_family_either_slave(method):
     measured each slave face's own gap, 3.2e-7 m = 1.2e-3 h, which the
     constraint posed per block face does not close; it takes the gap the
     constraint closes now, and a face constrained per block face takes
-    the law's update at that gap: 65, 60 and 77 correctors against LM's
+    the law's update at that gap: 65, 63 and 77 correctors against LM's
     62), Hertz's checks, and the roles checks."""
     ck = harness.Checks()
     blk, cyl = runs.near_rigid(method, "block"), runs.near_rigid(method, "cylinder")
