@@ -22,7 +22,7 @@ import re
 import pytest
 
 import harness
-from c4fpost import methods
+from c4fpost import contactreport, methods
 import runs
 from harness import methods_where
 
@@ -111,6 +111,37 @@ def test_slidingBlock_full_slip(method):
     ck = harness.Checks()
     name = "slidingBlock_" + method
     ck.run(harness.tutorial_run("slidingBlock", name, ["-method", method]), name)
+    ck.verify()
+
+
+def test_slidingBlock_stick_every_step():
+    """slidingBlock with `friction stick` (LM): every step converges. At t = 4
+    its trailing face went into tension while tied, was released, and
+    penetrated once free: it cycled for 5000 correctors. A face released
+    within a step re-enters free tangentially, as one that closes in it
+    (stickFrictionModel): 39 correctors, the face in contact with 2.6 kPa
+    and no stick. Tied linear elasticity: F_x grows with the push, the
+    increment from t = 3 to 4 (0.01 m) twice that from 2 to 3 (0.005 m) to
+    1 % (measured 0.5 % less: the freed face's share)."""
+    ck = harness.Checks()
+    name = "slidingBlock_stick_" + LM
+    r = harness.tutorial_run("slidingBlock", name, ["-method", LM, "-friction", "stick"])
+    case = r["case"]
+    if r["rc"] != 0:
+        ck.add(name + "/Allrun", False, note="see %s/log.*" % case)
+        ck.verify()
+    ck.steps_converged(case, name)
+    rows = {round(x["time"]): x for x in contactreport.rows(case, "upperBottom")}
+    have = all(t in rows for t in (2, 3, 4))
+    ck.add(name + "/steps_reported", have, note="(contactReport rows at t = 2, 3, 4)")
+    if have:
+        d23 = rows[3]["forceX"] - rows[2]["forceX"]
+        d34 = rows[4]["forceX"] - rows[3]["forceX"]
+        err = abs(d34 / (2 * d23) - 1)
+        ck.add(name + "/forceX_linear_in_push", err <= 0.01, d34, 2 * d23, err, 0.01,
+               note="[N] (F_x(4) - F_x(3) against 2 (F_x(3) - F_x(2)))")
+        ck.add(name + "/active_at_t4", rows[4]["activeFaces"] == 13, rows[4]["activeFaces"],
+               13, abs(rows[4]["activeFaces"] - 13), 0)
     ck.verify()
 
 

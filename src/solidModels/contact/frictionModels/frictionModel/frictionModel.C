@@ -107,6 +107,22 @@ void Foam::frictionModel::updateSlip
 }
 
 
+void Foam::frictionModel::noteReleases(const contactSlaveCondition& cond)
+{
+    if (!tieClosing_ && wasCoupled_.size() == cond.coupled.size())
+    {
+        forAll(wasCoupled_, facei)
+        {
+            if (wasCoupled_[facei] && !cond.coupled[facei])
+            {
+                closedAtStart_[facei] = false;
+            }
+        }
+    }
+    wasCoupled_ = cond.coupled;
+}
+
+
 void Foam::frictionModel::freeClosing
 (
     const label facei,
@@ -131,6 +147,7 @@ Foam::frictionModel::frictionModel
     state_(patch.size()),
     slipAtStepStart_(patch.size(), Zero),
     closedAtStart_(),
+    wasCoupled_(),
     tieClosing_(false),
     multipliersConverged_(true)
 {
@@ -169,6 +186,7 @@ void Foam::frictionModel::beginStep
     multipliersConverged_ = true;
     slipAtStepStart_ = state_.field<vector>("contactSlip");
     closedAtStart_.setSize(stick.size());
+    wasCoupled_ = cond.coupled;
     forAll(stick, facei)
     {
         closedAtStart_[facei] =

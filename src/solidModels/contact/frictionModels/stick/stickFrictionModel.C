@@ -51,6 +51,7 @@ void Foam::frictionModels::stick::correct
     contactSlaveCondition& cond
 )
 {
+    noteReleases(cond);
     releaseAll(cond);
     forAll(cond.tied, facei)
     {
