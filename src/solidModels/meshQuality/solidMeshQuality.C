@@ -51,7 +51,12 @@ Foam::solidMeshQuality::solidMeshQuality(const fvMesh& mesh)
     reduce(n, sumOp<label>());
     meanInternal_ = n ? sum/n : 0;
 
-    forAll(mesh.boundary(), patchi)
+    // The patches every processor has, in the same order (processor
+    // patches come after them and differ in number from processor to
+    // processor: a reduce per patch over all of them mismatched, MPI_ERR_
+    // TRUNCATE with 3 processors of hertzCylinder)
+    const label nGlobal = mesh.boundaryMesh().nNonProcessor();
+    for (label patchi = 0; patchi < nGlobal; ++patchi)
     {
         const fvPatch& p = mesh.boundary()[patchi];
         if (!p.coupled())
