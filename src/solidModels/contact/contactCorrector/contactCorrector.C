@@ -243,7 +243,10 @@ void Foam::contactCorrector::correct
     contactSlaveCondition& cond = h.cond();
     if (newStep)
     {
-        h.friction().beginStep(lastState_, cond);
+        h.friction().beginStep
+        (
+            lastState_, cond, h.method().contactRange(lastState_)
+        );
     }
     if (!firstUpdate)
     {

@@ -146,6 +146,23 @@ Foam::contactMethods::barrier::barrier
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::contactMethods::barrier::contactRange
+(
+    const contactSlaveState& state
+)
+{
+    if (dhat_ < 0)
+    {
+        // Taken with every processor's faces, so that a decomposed run
+        // takes the serial run's value
+        dhat_ =
+            dhatScale_
+           *returnReduce(state.h.size() ? max(state.h) : 0, maxOp<scalar>());
+    }
+    return dhat_;
+}
+
+
 void Foam::contactMethods::barrier::beginStep()
 {
     newStep_ = true;
@@ -161,14 +178,7 @@ void Foam::contactMethods::barrier::correct
 {
     cond.nChanged = 0;
 
-    if (dhat_ < 0)
-    {
-        // Taken here, with every processor's faces, so that a decomposed
-        // run takes the serial run's value
-        dhat_ =
-            dhatScale_
-           *returnReduce(state.h.size() ? max(state.h) : 0, maxOp<scalar>());
-    }
+    contactRange(state);
 
     scalarField& k = kappa();
     bool initialised = false;

@@ -170,7 +170,8 @@ Foam::frictionModel::frictionModel
 void Foam::frictionModel::beginStep
 (
     const contactSlaveState& state,
-    const contactSlaveCondition& cond
+    const contactSlaveCondition& cond,
+    const scalar contactRange
 )
 {
     if (!hasTangentialLaw())
@@ -192,7 +193,8 @@ void Foam::frictionModel::beginStep
         closedAtStart_[facei] =
             tieClosing_
          || stick[facei] >= 0
-         || state.gap[facei] <= touchTolerance_*state.h[facei];
+         || state.gap[facei]
+         <= max(touchTolerance_*state.h[facei], contactRange);
 
         if (stick[facei] < 0)
         {
