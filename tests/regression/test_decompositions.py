@@ -29,8 +29,10 @@ CASES = (("hertzCylinder", ["-method", LM]),
          ("slidingBlock", ["-method", LM, "-friction", "coulomb"]))
 
 
+# One xdist group: the sweeps take turns, so that at most one run of up to
+# 4 processes shares the 2 cores with the other worker's run
 @pytest.mark.parametrize("tutorial,args", [pytest.param(
-    t, a, marks=pytest.mark.xdist_group("decompositions_" + t), id=t) for t, a in CASES])
+    t, a, marks=pytest.mark.xdist_group("decompositions"), id=t) for t, a in CASES])
 def test_every_decomposition_equals_serial(tutorial, args):
     ck = harness.Checks()
     name = "%s_decompositions" % tutorial

@@ -89,6 +89,23 @@ void Foam::contactCorrector::build
 }
 
 
+void Foam::contactCorrector::setTangentialCompliance
+(
+    const contactMethod& method,
+    contactSlaveCondition& cond
+)
+{
+    if (method.exactTangentialTie())
+    {
+        cond.tangentialCompliance = scalarField(cond.compliance.size(), 0);
+    }
+    else
+    {
+        cond.tangentialCompliance = cond.compliance;
+    }
+}
+
+
 Foam::contactSlaveState Foam::contactCorrector::state
 (
     const fixedGradientFvPatchVectorField& slave,
@@ -243,6 +260,9 @@ void Foam::contactCorrector::correct
     contactSlaveCondition& cond = h.cond();
     if (newStep)
     {
+        // The condition the last step converged with (a restart reads
+        // the normal law's, not this)
+        setTangentialCompliance(h.method(), cond);
         h.friction().beginStep
         (
             lastState_, cond, h.method().contactRange(lastState_)
@@ -253,12 +273,14 @@ void Foam::contactCorrector::correct
         h.method().updateCorrectorMultipliers(lastState_, cond);
     }
     h.method().correct(lastState_, cond);
+    setTangentialCompliance(h.method(), cond);
     h.friction().correct(lastState_, cond);
 
     // 5. The coupling of this corrector
     contactInterfaceCoupling::inputs in;
     in.coupled = cond.coupled;
     in.compliance = cond.compliance;
+    in.tangentialCompliance = cond.tangentialCompliance;
     in.pressure0 = cond.explicitPressure;
     in.gap = lastState_.gap;
     in.normal = lastState_.normal;

@@ -53,6 +53,38 @@ Foam::vector Foam::contactInterfaceCoupling::lawPart
 }
 
 
+Foam::vector Foam::contactInterfaceCoupling::subFaceCoeffs
+(
+    const label i,
+    const label s
+) const
+{
+    if (!tied_[i] || coeffT_[s] == coeff_[s])
+    {
+        return coeff_[s]*faceWeights(i);
+    }
+    const vector nn(cmptMultiply(normal_[i], normal_[i]));
+    return coeff_[s]*nn + coeffT_[s]*(vector::one - nn);
+}
+
+
+Foam::vector Foam::contactInterfaceCoupling::subFaceTraction
+(
+    const label i,
+    const label s,
+    const vector& e
+) const
+{
+    if (!tied_[i] || coeffT_[s] == coeff_[s])
+    {
+        return coeff_[s]/area_[s]*e;
+    }
+    const vector& n = normal_[i];
+    const vector eN(n*(n & e));
+    return (coeff_[s]*eN + coeffT_[s]*(e - eN))/area_[s];
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactInterfaceCoupling::contactInterfaceCoupling
@@ -96,6 +128,7 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     DynamicList<label> start(slave.size() + 1);
     DynamicList<label> mf;
     DynamicList<scalar> coeff;
+    DynamicList<scalar> coeffT;
     DynamicList<vector> offset;
     DynamicList<scalar> area;
     scalarField gRefs(slave.size(), 0);
@@ -134,6 +167,16 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                 mf.append(j);
                 area.append(weights[i][k]*magS[i]);
                 coeff.append(area.last()*kij);
+                const scalar CT =
+                    in.tangentialCompliance.size()
+                  ? in.tangentialCompliance[i]
+                  : in.compliance[i];
+                coeffT.append
+                (
+                    CT == in.compliance[i]
+                  ? coeff.last()
+                  : area.last()/(rs + rm + CT)
+                );
                 // The normal law's offset, and the explicit tractions; a
                 // face that is not tied keeps their part along n
                 const scalar bN = -gRef + in.compliance[i]*in.pressure0[i];
@@ -158,7 +201,12 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                     vector b(bN*n + bC + R - n*(n & R));
                     if (in.tangentialMultiplier.size())
                     {
-                        b += in.compliance[i]*in.tangentialMultiplier[i];
+                        b +=
+                            (
+                                in.tangentialCompliance.size()
+                              ? in.tangentialCompliance[i]
+                              : in.compliance[i]
+                            )*in.tangentialMultiplier[i];
                     }
                     offset.append(b);
                 }
@@ -174,6 +222,7 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     start_.transfer(start);
     masterFace_.transfer(mf);
     coeff_.transfer(coeff);
+    coeffT_.transfer(coeffT);
     offset_.transfer(offset);
     area_.transfer(area);
 
@@ -233,6 +282,7 @@ void Foam::contactInterfaceCoupling::setGroups
                 // contactConstraintGroups), and its own gap
                 const label j = masterFace_[s];
                 coeff_[s] = area_[s]*groups_.stiffness(s);
+                coeffT_[s] = coeff_[s];
                 offset_[s] +=
                     n
                    *(
@@ -367,7 +417,7 @@ void Foam::contactInterfaceCoupling::slaveForces
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
             e[s] = lawPart(i, DM[masterFace_[s]] - D[fc[i]] + offset_[s]);
-            p[s] = coeff_[s]/area_[s]*e[s];
+            p[s] = subFaceTraction(i, s, e[s]);
         }
     }
     groups_.average(e, p);
@@ -428,10 +478,9 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::slaveDiag() const
     vectorField& d = td.ref();
     forAll(d, i)
     {
-        const vector w(faceWeights(i));
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            d[i] += coeff_[s]*w;
+            d[i] += subFaceCoeffs(i, s);
         }
     }
     return td;
@@ -443,10 +492,9 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterDiag() const
     vectorField d(nMaster_, Zero);
     forAll(normal_, i)
     {
-        const vector w(faceWeights(i));
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            d[masterFace_[s]] += coeff_[s]*w;
+            d[masterFace_[s]] += subFaceCoeffs(i, s);
         }
     }
     return pair_.masterSlice(pair_.sumOverProcessors(d, tag_)());
@@ -465,10 +513,9 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
     scalarField& nb = tnb.ref();
     forAll(nb, i)
     {
-        const scalar w = faceWeights(i)[cmpt];
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            nb[i] += coeff_[s]*w*psiM[masterFace_[s]];
+            nb[i] += subFaceCoeffs(i, s)[cmpt]*psiM[masterFace_[s]];
         }
     }
     return tnb;
@@ -486,10 +533,9 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::masterNeighbour
     scalarField nb(nMaster_, 0);
     forAll(normal_, i)
     {
-        const scalar w = faceWeights(i)[cmpt];
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            nb[masterFace_[s]] += coeff_[s]*w*psi[fc[i]];
+            nb[masterFace_[s]] += subFaceCoeffs(i, s)[cmpt]*psi[fc[i]];
         }
     }
     return pair_.masterSlice(pair_.sumOverProcessors(nb, tag_)());

@@ -50,7 +50,7 @@ Foam::vector Foam::frictionModel::tangentialGap
         n,
         state.relative[facei]
       - state_.field<vector>("contactStickPoint")[facei]
-      + cond.compliance[facei]
+      + cond.tangentialCompliance[facei]
        *(tangential(n, state.traction[facei]) - lambdaT(cond, facei))
     );
 }
