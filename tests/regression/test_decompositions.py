@@ -6,8 +6,8 @@ processor without any contact face, a processor holding one face of
 each patch), and each decomposed run's D equal to the serial run's to
 1e-8 of max |D| (both stop at the outer correctors' residual 1e-9;
 measured at most 6.3e-9 on hertzCylinder, 1.2e-10 on the others). With
-friction (slidingBlock, coulomb) the slave's stick flags are the
-serial run's too. Before, 3 or 4 processors of hertzCylinder crashed
+friction (slidingBlock with coulomb, the stick patch test with stick:
+3.5e-11) the slave's stick flags are the serial run's too. Before, 3 or 4 processors of hertzCylinder crashed
 (MPI_ERR_TRUNCATE) or hung: the mesh-quality check reduced once per
 patch over each processor's own patches, processor patches included."""
 import os
@@ -26,7 +26,8 @@ LAYOUTS = ("scotch2", "scotch3", "scotch4", "simpleCut2", "simpleCut4", "slaveOn
            "masterOnOne", "noContactFace3", "oneFaceEach")
 CASES = (("hertzCylinder", ["-method", LM]),
          ("contactPatchTest3D", ["-method", LM, "-rotate"]),
-         ("slidingBlock", ["-method", LM, "-friction", "coulomb"]))
+         ("slidingBlock", ["-method", LM, "-friction", "coulomb"]),
+         ("contactPatchTest", ["-method", LM, "-friction", "stick", "-shear", "one"]))
 
 
 # One xdist group: the sweeps take turns, so that at most one run of up to
