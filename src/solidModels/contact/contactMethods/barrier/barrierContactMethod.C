@@ -178,6 +178,7 @@ void Foam::contactMethods::barrier::correct
 {
     cond.nChanged = 0;
 
+    // dhat, taken once with every processor's faces (contactRange)
     contactRange(state);
 
     scalarField& k = kappa();

@@ -67,7 +67,9 @@ void Foam::contactMethods::directElimination::correct
             state.inRange[facei]
          && c4f::contact::directEliminationActive
             (
-                cond.active[facei], state.reaction[facei], state.constraintGap[facei]
+                cond.active[facei],
+                state.reaction[facei],
+                state.constraintGap[facei]
             );
 
         cond.pressure[facei] = carriedPressure(state, cond, facei);

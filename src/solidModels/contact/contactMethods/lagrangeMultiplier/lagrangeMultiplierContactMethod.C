@@ -68,7 +68,10 @@ void Foam::contactMethods::lagrangeMultiplier::correct
 
         const bool active =
             state.inRange[facei]
-         && c4f::contact::activeByPrimalDual(lambda, state.constraintGap[facei], c);
+         && c4f::contact::activeByPrimalDual
+            (
+                lambda, state.constraintGap[facei], c
+            );
 
         cond.setActive(facei, active);
 

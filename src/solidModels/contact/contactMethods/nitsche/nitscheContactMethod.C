@@ -87,7 +87,10 @@ void Foam::contactMethods::nitsche::correct
             gamma0_, state.stiffness[facei]
         );
         const c4f::contact::NitscheValue v =
-            c4f::contact::nitschePressure(state.constraintGap[facei], sigmaN, gamma);
+            c4f::contact::nitschePressure
+            (
+                state.constraintGap[facei], sigmaN, gamma
+            );
 
         cond.pressure[facei] = carriedPressure(state, cond, facei);
         cond.clearLaw(facei);
