@@ -360,7 +360,8 @@ bool Foam::contactCorrector::converged
     const label nActive = h.nActive();
     const bool converged =
         changes == 0
-     && (nActive == 0 || dF <= tolerance*max(mag(F), VSMALL));
+     && (nActive == 0 || dF <= tolerance*max(mag(F), VSMALL))
+     && h.method().lawConverged(lastState_, h.pressure());
 
     if (converged && valid())
     {

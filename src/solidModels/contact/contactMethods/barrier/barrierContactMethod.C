@@ -27,7 +27,8 @@ Foam::contactMethods::barrier::typeTraits
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::none,
     false,  // finiteStrain
-    "dhatScale 1e-3; kappaScale 1; stepFraction 0.2; gapFloor 0.01; maxKappaFactor 100;"
+    "dhatScale 1e-3; kappaScale 1; stepFraction 0.2; gapFloor 0.01;"
+    " maxKappaFactor 100; lawTolerance 1e-6;"
 };
 
 
@@ -65,6 +66,7 @@ Foam::contactMethods::barrier::barrier
     stepFraction_(coeffs.get<scalar>("stepFraction")),
     gapFloor_(coeffs.get<scalar>("gapFloor")),
     maxKappaFactor_(coeffs.get<scalar>("maxKappaFactor")),
+    lawTolerance_(coeffs.get<scalar>("lawTolerance")),
     started_(false),
     newStep_(true),
     previousMinGap_(GREAT),
@@ -128,6 +130,15 @@ Foam::contactMethods::barrier::barrier
             "gapFloor", gapFloor_,
             c4f::contact::describeBarrierFractionRequirement()
           + " (of dhat)"
+        );
+    }
+    if (!c4f::contact::validBarrierFraction(lawTolerance_))
+    {
+        invalid
+        (
+            "lawTolerance", lawTolerance_,
+            c4f::contact::describeBarrierFractionRequirement()
+          + " (of the largest pressure; 1e-6 is usual)"
         );
     }
     if (!(maxKappaFactor_ >= 1 && std::isfinite(maxKappaFactor_)))
@@ -338,6 +349,34 @@ bool Foam::contactMethods::barrier::updateMultipliers
 
     Info<< "  kappa doubled to " << gMax(k) << " Pa/m" << endl;
     return true;
+}
+
+
+bool Foam::contactMethods::barrier::lawConverged
+(
+    const contactSlaveState& state,
+    const scalarField& pressure
+) const
+{
+    const scalarField& k = state_["barrierStiffness"];
+    scalar worst = 0;
+    scalar pMax = 0;
+    forAll(state.gap, facei)
+    {
+        if (state.inRange[facei] && state.gap[facei] < dhat_)
+        {
+            const scalar p =
+                c4f::contact::barrierPressure
+                (
+                    state.gap[facei], dhat_, k[facei]
+                ).pressure;
+            worst = max(worst, mag(p - pressure[facei]));
+            pMax = max(pMax, mag(pressure[facei]));
+        }
+    }
+    reduce(worst, maxOp<scalar>());
+    reduce(pMax, maxOp<scalar>());
+    return worst <= lawTolerance_*pMax;
 }
 
 
