@@ -78,6 +78,12 @@ Large sliding (`run.py --only ironing`, issue 22): shallowIroning at
 1.5, the peak-to-peak of H over the steady part, correctors per step and
 wall time (compareIroning.py's numbers).
 
+GAMG (`run.py --only gamg`, issue 24): hertzCylinder at -refine 1, 2 and
+4 and hertzSphere, the Lagrange multiplier with the contact coupling on
+GAMG's coarse levels (the default) and on the finest only, against two
+contact-free equivalents of the converged run: correctors, linear
+iterations per corrector, wall time and their ratios; markdown in gamg.md.
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
@@ -174,7 +180,7 @@ def timed_solver_dir():
 
 
 def bench_case(name, src, entries=None, prepare=None, allrun=None, parallel=False,
-               require=False):
+               require=False, edit=None):
     """One solver run on a fresh copy of `src` (a tutorial, or a case run
     before) in WORK/name: `entries` set in solidMechanics, then either
     prepare(case) sets it up (mesh included) and the solver runs here, or
@@ -191,6 +197,8 @@ def bench_case(name, src, entries=None, prepare=None, allrun=None, parallel=Fals
         "wall." + SOLVER))
     if entries:
         set_solid_mechanics(case, entries)
+    if edit is not None:
+        edit(case)
     logfile = os.path.join(case, "log." + SOLVER)
     if allrun is not None:
         env = dict(os.environ, PATH=timed_solver_dir() + os.pathsep + os.environ["PATH"])
@@ -223,7 +231,9 @@ def bench_case(name, src, entries=None, prepare=None, allrun=None, parallel=Fals
     if require and not converged:
         sys.exit("bench: %s did not converge (rc=%d), see %s" % (name, rc, logfile))
     contact = re.search(r"contactTime = (\S+)", steps[-1][2]) if steps else None
+    linear = re.findall(r"^\s+linear solver: (\d+) iterations", log, flags=re.M)
     return dict(name=name, case=case, rc=rc, converged=converged, steps=len(steps),
+                linear=sum(int(n) for n in linear) if linear else None,
                 ncorr=sum(int(s[0]) for s in steps) if steps else None,
                 residual=float(steps[-1][1]) if steps else None,
                 wall=wall, wall_step=wall / max(1, len(steps)),
@@ -1203,6 +1213,84 @@ def unstructured_bench():
                 "%.1f" % free["wall"] if free["converged"] else "-"))
 
 
+GAMG_CASES = (("hertzCylinder", ["-refine", "1"], "cylinderContact", "blockContact"),
+              ("hertzCylinder", ["-refine", "2"], "cylinderContact", "blockContact"),
+              ("hertzCylinder", ["-refine", "4"], "cylinderContact", "blockContact"),
+              ("hertzSphere", [], "sphereContact", "blockContact"))
+
+
+def no_coarse_coupling(case):
+    """The coarse levels without the contact coupling (the optimisation
+    switch contactCoarseCoupling, contactGAMGInterfaceField), as before."""
+    with open(os.path.join(case, "system/controlDict"), "a") as f:
+        f.write("\nOptimisationSwitches\n{\n    contactCoarseCoupling 0;\n}\n")
+
+
+def gamg_bench():
+    """GAMG with the contact on its coarse levels (issue 24): for each
+    case the Lagrange multiplier run with and without the coarse coupling
+    and two contact-free equivalents of the converged run (the slave's
+    displacement and the master's traction prescribed, as the convergence
+    table's; and both contact tractions prescribed, each body held by
+    tractions as the contact holds it): the outer correctors, the linear
+    solver's iterations per corrector (summed over the components) and the
+    solver's wall time, with the ratios to the contact-free runs. Markdown
+    in WORK/gamg.md."""
+    print("\n== GAMG: the contact coupling on the coarse levels")
+    head = ("case", "run", "correctors", "linear it. / corrector", "wall [s]",
+            "wall / corrector [ms]", "it. / corr. over free (u, t) / (t, t)",
+            "wall over free (u, t) / (t, t)")
+    lines = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    print("%-22s %-18s %6s %8s %8s %8s %16s %16s" % (
+        "case", "run", "corr", "it/corr", "wall", "ms/corr", "it ratio u,t/t,t", "wall u,t/t,t"))
+    for tutorial, args, slave, master in GAMG_CASES:
+        label = "%s %s" % (tutorial, " ".join(args)) if args else tutorial
+        tag = "gamg_%s_%s" % (tutorial, "_".join(args[1:]) or "1")
+        src = os.path.join(ROOT, "tutorials", tutorial)
+        runs = [("coupled (default)",
+                 bench_case(tag + "_coupled", src, allrun=args)),
+                ("fine level only",
+                 bench_case(tag + "_fineOnly", src, allrun=args, edit=no_coarse_coupling))]
+        ref = runs[0][1]
+        if not ref["converged"]:
+            lines.append("| %s | contact run did not converge | | | | | | |" % label)
+            print("%-22s contact run did not converge" % label)
+            continue
+        t = foamio.latest_time(ref["case"])
+        free = []
+        for kind, st in (("free: u slave, t master", False), ("free: t both", True)):
+            def prepare(c, st=st):
+                shutil.copytree(os.path.join(ref["case"], t), os.path.join(c, t))
+                contactfree.make_contact_free(c, t, slave, master, slave_traction=st)
+            free.append((kind, bench_case(tag + ("_freeTT" if st else "_freeUT"), ref["case"],
+                                          prepare=prepare)))
+        ok = [f for _, f in free if f["converged"] and f["linear"]]
+        for kind, r in runs + free:
+            if not r["converged"] or not r["linear"]:
+                lines.append("| %s | %s | %s | not converged | | | | |" % (label, kind, r["ncorr"]))
+                print("%-22s %-18s not converged" % (label, kind))
+                continue
+            per = r["linear"] / r["ncorr"]
+            ratios = " / ".join("%.2f" % (per / (f["linear"] / f["ncorr"])) for f in ok)
+            walls = " / ".join("%.2f" % (r["wall"] / f["wall"]) for f in ok)
+            lines.append("| %s | %s | %d | %.1f | %.2f | %.1f | %s | %s |" % (
+                label, kind, r["ncorr"], per, r["wall"], 1e3 * r["wall"] / r["ncorr"],
+                ratios, walls))
+            print("%-22s %-18s %6d %8.1f %8.2f %8.1f %16s %16s" % (
+                label, kind[:18], r["ncorr"], per, r["wall"], 1e3 * r["wall"] / r["ncorr"],
+                ratios, walls))
+    notes = [
+        "",
+        "Each contact run's linear iterations per outer corrector and wall time over those of"
+        " the two contact-free equivalents of its converged state (u, t: the slave's"
+        " displacement and the master's traction prescribed; t, t: both tractions). The issue's"
+        " target: iterations per corrector within 1.3x, the step's wall time within 1.3x.",
+    ]
+    with open(os.path.join(WORK, "gamg.md"), "w") as f:
+        f.write("\n".join(lines + notes) + "\n")
+    print("(markdown: %s)" % os.path.join(WORK, "gamg.md"))
+
+
 def finite_strain_bench():
     """finiteStrainCylinder's force against CalculiX's over the ten steps,
     with a CalculiX curve made in this run (ccx, when it
@@ -1342,7 +1430,7 @@ def main():
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa", "roles",
                                        "perturbedLagrange", "methods", "friction",
-                                       "unstructured", "finiteStrain", "ironing"),
+                                       "unstructured", "finiteStrain", "ironing", "gamg"),
                     help="run one part only (convergence includes hertz's runs)")
     ap.add_argument("--cattaneo-methods", nargs="+", metavar="METHOD",
                     help="the friction part's cattaneoMindlin methods (default: %s;"
@@ -1375,6 +1463,8 @@ def main():
         finite_strain_bench()
     if args.only in (None, "ironing"):
         ironing_bench()
+    if args.only in (None, "gamg"):
+        gamg_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 

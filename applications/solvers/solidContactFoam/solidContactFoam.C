@@ -222,6 +222,7 @@ int main(int argc, char *argv[])
     while (runTime.loop())
     {
         label nCorr = 0;
+        label nLinearStep = 0;
         scalar residual = GREAT;
         bool converged = false;
         bool multipliersExhausted = false;
@@ -246,6 +247,8 @@ int main(int argc, char *argv[])
             DEqn.relax();
 
             const SolverPerformance<vector> perf = DEqn.solve();
+            const label nLinear = cmptSum(perf.nIterations());
+            nLinearStep += nLinear;
 
             // A component that stays at round-off against the displacement
             // (D_x of a uniaxial nu = 0 column) has a normalised residual
@@ -340,7 +343,8 @@ int main(int argc, char *argv[])
             if (verbose)
             {
                 Info<< "    corrector " << nCorr
-                    << "  residual = " << residual;
+                    << "  residual = " << residual
+                    << "  linear iterations = " << nLinear;
                 if (acceleration.active())
                 {
                     Info<< "  |G(x) - x| = " << acceleration.residualNorm()
@@ -369,6 +373,9 @@ int main(int argc, char *argv[])
             << (converged ? "" : "  NOT CONVERGED")
             << contactSummary.c_str()
             << endl;
+        Info<< "    linear solver: " << nLinearStep << " iterations over the"
+            << " components, " << scalar(nLinearStep)/max(nCorr, 1)
+            << " per corrector" << endl;
 
         // contactReport and other function objects read it
         mesh.data::set("solidMechanicsConverged", converged);

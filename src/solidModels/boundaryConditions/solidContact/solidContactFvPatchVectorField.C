@@ -366,6 +366,31 @@ void Foam::solidContactFvPatchVectorField::updateInterfaceMatrix
 }
 
 
+Foam::label Foam::solidContactFvPatchVectorField::shadowPatchIndex() const
+{
+    return patch().boundaryMesh().findPatchID(shadowPatchName());
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::solidContactFvPatchVectorField::neighbourSum
+(
+    const UList<solveScalar>& psi,
+    const direction cmpt,
+    const labelUList& partnerCells
+) const
+{
+    const contactInterfaceCoupling* c = coupling();
+    if (!c)
+    {
+        return tmp<scalarField>();
+    }
+    return
+        master()
+      ? c->masterNeighbour(psi, cmpt, partnerCells)
+      : c->slaveNeighbour(psi, cmpt, partnerCells);
+}
+
+
 void Foam::solidContactFvPatchVectorField::autoMap
 (
     const fvPatchFieldMapper& m

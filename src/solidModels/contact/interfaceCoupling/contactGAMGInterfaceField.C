@@ -4,6 +4,8 @@
 
 #include "contactGAMGInterfaceField.H"
 #include "addToRunTimeSelectionTable.H"
+#include "solidContactFvPatchVectorField.H"
+#include "registerSwitch.H"
 
 namespace Foam
 {
@@ -21,3 +23,91 @@ namespace Foam
         lduInterface
     );
 }
+
+int Foam::contactGAMGInterfaceField::coarseCoupling
+(
+    Foam::debug::optimisationSwitch("contactCoarseCoupling", 1)
+);
+registerOptSwitch
+(
+    "contactCoarseCoupling",
+    int,
+    Foam::contactGAMGInterfaceField::coarseCoupling
+);
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactGAMGInterfaceField::contactGAMGInterfaceField
+(
+    const GAMGInterface& GAMGCp,
+    const lduInterfaceField& fineInterface
+)
+:
+    GAMGInterfaceField(GAMGCp, fineInterface),
+    root_(nullptr)
+{
+    if (const auto* coarse = isA<contactGAMGInterfaceField>(fineInterface))
+    {
+        root_ = coarse->root();
+    }
+    else
+    {
+        root_ = isA<solidContactFvPatchVectorField>(fineInterface);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::contactGAMGInterfaceField::updateInterfaceMatrix
+(
+    solveScalarField& result,
+    const bool add,
+    const solveScalarField& psiInternal,
+    const scalarField&,
+    const direction cmpt,
+    const Pstream::commsTypes
+) const
+{
+    if (!root_ || !coarseCoupling)
+    {
+        return;
+    }
+
+    // The partner's faces on this level: its interface in the level's list
+    // at the partner patch's index (contactFvMesh lists each contact
+    // interface at its patch's index, and GAMG keeps the indices)
+    const lduInterfacePtrsList& level = interface().coarseInterfaces();
+    const label partner = root_->shadowPatchIndex();
+    if (partner < 0 || partner >= level.size() || !level.set(partner))
+    {
+        FatalErrorInFunction
+            << "Contact patch " << root_->patch().name() << ": no GAMG"
+            << " interface of its shadow patch (index " << partner << ") on"
+            << " this level; the mesh must list both contact patches"
+            << " (contactFvMesh)" << abort(FatalError);
+    }
+
+    const tmp<scalarField> tnb
+    (
+        root_->neighbourSum(psiInternal, cmpt, level[partner].faceCells())
+    );
+    if (!tnb.valid())
+    {
+        return;
+    }
+    const scalarField& nb = tnb();
+
+    // The sign of an internal face's off-diagonal coefficient, as on the
+    // finest level (solidContactFvPatchVectorField::updateInterfaceMatrix)
+    const scalar sign = add ? 1 : -1;
+    const labelUList& fc = interface().faceCells();
+    forAll(fc, facei)
+    {
+        result[fc[facei]] += sign*nb[facei];
+    }
+}
+
+
+// ************************************************************************* //

@@ -13,7 +13,17 @@ Foam::tmp<Foam::Field<Type>> Foam::contactInterfaceCoupling::masterCellValues
     const UList<Type>& cellValues
 ) const
 {
-    const labelUList& fc = pair_.masterPatch().faceCells();
+    return masterCellValues(cellValues, pair_.masterPatch().faceCells());
+}
+
+
+template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::contactInterfaceCoupling::masterCellValues
+(
+    const UList<Type>& cellValues,
+    const labelUList& fc
+) const
+{
     Field<Type> local(fc.size());
     forAll(fc, facei)
     {
@@ -507,7 +517,18 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
     const direction cmpt
 ) const
 {
-    const scalarField psiM(masterCellValues(psi));
+    return slaveNeighbour(psi, cmpt, pair_.masterPatch().faceCells());
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
+(
+    const UList<solveScalar>& psi,
+    const direction cmpt,
+    const labelUList& masterCells
+) const
+{
+    const scalarField psiM(masterCellValues(psi, masterCells));
 
     tmp<scalarField> tnb(new scalarField(normal_.size(), 0));
     scalarField& nb = tnb.ref();
@@ -528,8 +549,17 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::masterNeighbour
     const direction cmpt
 ) const
 {
-    const labelUList& fc = pair_.slavePatch().faceCells();
+    return masterNeighbour(psi, cmpt, pair_.slavePatch().faceCells());
+}
 
+
+Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::masterNeighbour
+(
+    const UList<solveScalar>& psi,
+    const direction cmpt,
+    const labelUList& fc
+) const
+{
     scalarField nb(nMaster_, 0);
     forAll(normal_, i)
     {
