@@ -84,6 +84,11 @@ GAMG's coarse levels (the default) and on the finest only, against two
 contact-free equivalents of the converged run: correctors, linear
 iterations per corrector, wall time and their ratios; markdown in gamg.md.
 
+The big case (`run.py --only big`, issue 24): hertzSphere at about 1e6
+cells, serial and on 2 processors: wall time per corrector, linear
+iterations, the contact update's share, memory per process, the master
+faces each processor holds, the strong-scaling efficiency; big.md.
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
@@ -170,11 +175,15 @@ def timed_solver_dir():
                 "import os, subprocess, sys, time\n"
                 "if any(a.startswith('-list') for a in sys.argv[1:]):\n"
                 "    os.execv(%r, [%r] + sys.argv[1:])\n"
+                "import resource\n"
                 "t0 = time.time()\n"
                 "rc = subprocess.call([%r] + sys.argv[1:])\n"
                 "with open('wall.%s', 'w') as f:\n"
                 "    f.write('%%.6f %%d\\n' %% (time.time() - t0, rc))\n"
-                "sys.exit(rc)\n" % (real, real, real, SOLVER))
+                "with open('mem.%s', 'a') as f:\n"
+                "    f.write('%%s %%d\\n' %% (os.environ.get('OMPI_COMM_WORLD_RANK', '0'),\n"
+                "            resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss))\n"
+                "sys.exit(rc)\n" % (real, real, real, SOLVER, SOLVER))
     os.chmod(exe, 0o755)
     return d
 
@@ -194,7 +203,7 @@ def bench_case(name, src, entries=None, prepare=None, allrun=None, parallel=Fals
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(src, case, ignore=shutil.ignore_patterns(
         "[1-9]*", "processor*", "log.*", "VTK", "postProcessing", "*.png", "checks.json",
-        "wall." + SOLVER))
+        "wall." + SOLVER, "mem." + SOLVER))
     if entries:
         set_solid_mechanics(case, entries)
     if edit is not None:
@@ -1291,6 +1300,67 @@ def gamg_bench():
     print("(markdown: %s)" % os.path.join(WORK, "gamg.md"))
 
 
+# hertzSphere's cell counts times BIG_REFINE^3: 54,622 x 2.63^3, about 1e6
+BIG_REFINE = "2.63"
+
+
+def big_bench():
+    """The big case (issue 24): hertzSphere at about 1e6 cells (-refine
+    BIG_REFINE), serial and on 2 processors (-parallel): cells, outer
+    correctors, the solver's wall time and per corrector, the linear
+    iterations per corrector, the contact update (search, method and
+    transfer: contactTime of the step summary) as a share of the step, the
+    peak memory of each process (the solver's maxrss), the master faces
+    each processor holds against the whole master (the gather-all of
+    before), and the strong-scaling efficiency t1/(2 t2). Markdown in
+    WORK/big.md. About half an hour on 2 cores."""
+    print("\n== The big case: hertzSphere -refine %s, serial and on 2 processors" % BIG_REFINE)
+    tut = os.path.join(ROOT, "tutorials", "hertzSphere")
+    head = ("run", "cells", "correctors", "wall [s]", "wall / corrector [s]",
+            "linear it. / corrector", "contact update / step", "maxrss per process [MB]",
+            "master faces held / all")
+    lines = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    walls = {}
+    for parallel in (False, True):
+        label = "2 processors" if parallel else "serial"
+        r = bench_case("big_hertzSphere_" + ("parallel" if parallel else "serial"), tut,
+                       allrun=["-refine", BIG_REFINE] + (["-parallel"] if parallel else []))
+        log = open(os.path.join(r["case"], "log." + SOLVER)).read() \
+            if os.path.exists(os.path.join(r["case"], "log." + SOLVER)) else ""
+        cells = re.search(r"nCells:\s+(\d+)",
+                          open(os.path.join(r["case"], "log.blockMesh")).read()) \
+            if os.path.exists(os.path.join(r["case"], "log.blockMesh")) else None
+        mem = []
+        memfile = os.path.join(r["case"], "mem." + SOLVER)
+        if os.path.exists(memfile):
+            for line in open(memfile):
+                rank, kb = line.split()
+                mem.append((int(rank), int(kb) / 1024.0))
+        held = re.findall(r"master faces held per processor (\d+) \.\. (\d+) of (\d+)", log)
+        if not r["converged"]:
+            lines.append("| %s | %s | %s | not converged | | | | | |" % (
+                label, cells.group(1) if cells else "?", r["ncorr"]))
+            print("%-14s not converged (see %s)" % (label, r["case"]))
+            continue
+        walls[parallel] = r["wall"]
+        share = r["contact"] / (r["wall"] / max(1, r["steps"])) if r["contact"] else float("nan")
+        heldText = ("%s .. %s / %s" % held[-1]) if held else "all (serial)"
+        memText = ", ".join("%.0f" % m for _, m in sorted(mem)) or "-"
+        lines.append("| %s | %s | %d | %.1f | %.3f | %.1f | %.1f %% | %s | %s |" % (
+            label, cells.group(1) if cells else "?", r["ncorr"], r["wall"],
+            r["wall"] / r["ncorr"], r["linear"] / r["ncorr"] if r["linear"] else float("nan"),
+            100 * share, memText, heldText))
+        print(lines[-1])
+    if len(walls) == 2:
+        eff = walls[False] / (2 * walls[True])
+        lines.append("")
+        lines.append("Strong-scaling efficiency from 1 to 2 processors, t1/(2 t2): %.2f." % eff)
+        print(lines[-1])
+    with open(os.path.join(WORK, "big.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("(markdown: %s)" % os.path.join(WORK, "big.md"))
+
+
 def finite_strain_bench():
     """finiteStrainCylinder's force against CalculiX's over the ten steps,
     with a CalculiX curve made in this run (ccx, when it
@@ -1430,7 +1500,7 @@ def main():
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa", "roles",
                                        "perturbedLagrange", "methods", "friction",
-                                       "unstructured", "finiteStrain", "ironing", "gamg"),
+                                       "unstructured", "finiteStrain", "ironing", "gamg", "big"),
                     help="run one part only (convergence includes hertz's runs)")
     ap.add_argument("--cattaneo-methods", nargs="+", metavar="METHOD",
                     help="the friction part's cattaneoMindlin methods (default: %s;"
@@ -1465,6 +1535,8 @@ def main():
         ironing_bench()
     if args.only in (None, "gamg"):
         gamg_bench()
+    if args.only in (None, "big"):
+        big_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 

@@ -12,6 +12,8 @@
 #include "boundBox.H"
 #include "solidPatchTractions.H"
 #include "syncTools.H"
+#include "globalIndex.H"
+#include "Map.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -28,7 +30,8 @@ Foam::contactPatchPair::contactPatchPair
     master_(master),
     searchDistance_(searchDistance),
     smoothNormals_(smoothNormals),
-    masterStart_(0),
+    masterFaceSize_(0),
+    surfaceGathered_(false),
     rebuildTolerance_(rebuildTolerance),
     staleness_(0),
     nBuilds_(0),
@@ -42,43 +45,163 @@ Foam::contactPatchPair::contactPatchPair
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::contactPatchPair::gatherMasterSurface()
+bool Foam::contactPatchPair::selectionStale
+(
+    const vectorField& masterD,
+    const vectorField& slaveD
+) const
+{
+    if (!masterMap_.valid())
+    {
+        return false;
+    }
+    // A slave face whose reach leaves the box, or a master face moved
+    // by more than the margin (it may have come into another box)
+    const scalar reach = searchDistance_ + 2*masterFaceSize_;
+    const vectorField x(slave_.Cf() + slaveD);
+    bool stale = false;
+    for (const point& p : x)
+    {
+        if
+        (
+            !selectedBox_.contains(p - vector::uniform(reach))
+         || !selectedBox_.contains(p + vector::uniform(reach))
+        )
+        {
+            stale = true;
+            break;
+        }
+    }
+    if (!stale && selectedMasterD_.size() == masterD.size())
+    {
+        stale =
+            masterD.size()
+         && max(mag(masterD - selectedMasterD_)) > selectionMargin();
+    }
+    return returnReduce(stale, orOp<bool>());
+}
+
+
+void Foam::contactPatchPair::gatherMasterSurface
+(
+    const vectorField& masterD,
+    const vectorField& slaveD
+)
 {
     const polyPatch& pp = master_.patch();
+    const pointField& lp = pp.localPoints();
+    const faceList& lf = pp.localFaces();
 
-    List<pointField> procPoints(Pstream::nProcs());
-    List<faceList> procFaces(Pstream::nProcs());
-    procPoints[Pstream::myProcNo()] = pp.localPoints();
-    procFaces[Pstream::myProcNo()] = pp.localFaces();
-
-    Pstream::gatherList(procPoints);
-    Pstream::scatterList(procPoints);
-    Pstream::gatherList(procFaces);
-    Pstream::scatterList(procFaces);
-
-    // Concatenate, then merge the points processors share
-    DynamicList<point> allPoints;
-    DynamicList<face> allFaces;
-    forAll(procFaces, proci)
+    // Each face with its own reference points (merged again below)
+    List<pointField> facePoints(lf.size());
+    scalar h = 0;
+    forAll(lf, facei)
     {
-        if (proci == Pstream::myProcNo())
+        facePoints[facei] = lf[facei].points(lp);
+        h = max(h, boundBox(facePoints[facei], false).mag());
+    }
+    masterFaceSize_ = returnReduce(h, maxOp<scalar>());
+
+    const labelList oldGlobal(masterGlobalFace_);
+    labelList globalFace(identity(lf.size()));
+
+    if (Pstream::parRun())
+    {
+        const globalIndex gi(lf.size());
+        forAll(globalFace, facei)
         {
-            masterStart_ = allFaces.size();
+            globalFace[facei] = gi.toGlobal(facei);
         }
-        const label pointStart = allPoints.size();
-        allPoints.append(procPoints[proci]);
-        for (const face& f : procFaces[proci])
+
+        // This processor's slave faces, where they are, and their reach
+        const vectorField x(slave_.Cf() + slaveD);
+        selectedBox_ = boundBox(x, false);
+        if (x.size())
         {
-            face g(f.size());
-            forAll(f, fp)
+            const vector r
+            (
+                vector::uniform
+                (
+                    searchDistance_ + 2*masterFaceSize_ + selectionMargin()
+                )
+            );
+            selectedBox_ = boundBox(selectedBox_.min() - r, selectedBox_.max() + r);
+        }
+        List<boundBox> boxes(Pstream::nProcs());
+        boxes[Pstream::myProcNo()] = selectedBox_;
+        Pstream::gatherList(boxes);
+        Pstream::scatterList(boxes);
+
+        // Each local master face, where it is now, to every processor
+        // whose box it meets
+        List<boundBox> faceBoxes(lf.size());
+        forAll(lf, facei)
+        {
+            faceBoxes[facei] =
+                boundBox(facePoints[facei] + masterD[facei], false);
+        }
+        labelListList send(Pstream::nProcs());
+        forAll(boxes, proci)
+        {
+            DynamicList<label> faces;
+            if (boxes[proci].valid())
             {
-                g[fp] = pointStart + f[fp];
+                forAll(faceBoxes, facei)
+                {
+                    if (faceBoxes[facei].overlaps(boxes[proci]))
+                    {
+                        faces.append(facei);
+                    }
+                }
             }
-            allFaces.append(g);
+            send[proci].transfer(faces);
+        }
+        masterMap_.reset(new mapDistributeBase(std::move(send)));
+        masterMap_->distribute(facePoints);
+        masterMap_->distribute(globalFace);
+        selectedMasterD_ = masterD;
+
+        Info<< "    contact " << slave_.name() << ": master faces held per"
+            << " processor " << returnReduce(facePoints.size(), minOp<label>())
+            << " .. " << returnReduce(facePoints.size(), maxOp<label>())
+            << " of " << gi.size() << " (the reach of its slave faces, "
+            << searchDistance_ + 2*masterFaceSize_ + selectionMargin()
+            << " m)" << endl;
+    }
+    masterGlobalFace_.transfer(globalFace);
+
+    // Concatenate; merge the points faces share
+    DynamicList<point> allPoints;
+    faceList allFaces(facePoints.size());
+    forAll(facePoints, facei)
+    {
+        face f(facePoints[facei].size());
+        forAll(f, fp)
+        {
+            f[fp] = allPoints.size();
+            allPoints.append(facePoints[facei][fp]);
+        }
+        allFaces[facei].transfer(f);
+    }
+
+    // The face each slave face saw at the step's start, in the new
+    // numbering (-1 where it is no longer held)
+    if (stepMasterFace_.size() && oldGlobal.size())
+    {
+        Map<label> index(2*masterGlobalFace_.size());
+        forAll(masterGlobalFace_, facei)
+        {
+            index.insert(masterGlobalFace_[facei], facei);
+        }
+        for (label& j : stepMasterFace_)
+        {
+            j = (j >= 0 ? index.lookup(oldGlobal[j], -1) : -1);
         }
     }
 
-    const boundBox bb(allPoints, false);
+    // The tolerance from the whole master's extent, the same on every
+    // processor and in serial
+    const boundBox bb(lp, true);
     labelList pointMap;
     mergePoints
     (
@@ -416,9 +539,18 @@ void Foam::contactPatchPair::update
     const vectorField& slaveD
 )
 {
-    if (masterRefFaces_.empty() && returnReduce(master_.size(), sumOp<label>()))
+    if
+    (
+        (
+            !surfaceGathered_
+         && returnReduce(master_.size(), sumOp<label>())
+        )
+     || selectionStale(masterD, slaveD)
+    )
     {
-        gatherMasterSurface();
+        gatherMasterSurface(masterD, slaveD);
+        surfaceGathered_ = true;
+        builtPoints_.clear();
     }
     moveMaster(masterD);
 
@@ -693,7 +825,7 @@ Foam::tmp<Foam::vectorField> Foam::contactPatchPair::masterForce
         }
     }
 
-    return masterSlice(sumOverProcessors(F)());
+    return masterSum(F);
 }
 
 
@@ -703,7 +835,7 @@ Foam::tmp<Foam::vectorField> Foam::contactPatchPair::relativeDisplacement
     List<List<vector>>& corrections
 ) const
 {
-    tmp<vectorField> trel(slaveD - slaveValues(masterFaceD_));
+    tmp<vectorField> trel(slaveD - slaveValuesGathered(masterFaceD_));
     vectorField& rel = trel.ref();
 
     const word gradName("gradD");

@@ -12,35 +12,50 @@ Foam::tmp<Foam::Field<Type>> Foam::contactPatchPair::gatherMaster
     const int tag
 ) const
 {
-    tmp<Field<Type>> tall(new Field<Type>());
-    Field<Type>& all = tall.ref();
-
-    if (!Pstream::parRun())
+    tmp<Field<Type>> tall(new Field<Type>(local));
+    if (masterMap_.valid())
     {
-        all = local;
-        return tall;
+        masterMap_->distribute(tall.ref(), tag);
     }
-
-    List<Field<Type>> procValues(Pstream::nProcs());
-    procValues[Pstream::myProcNo()] = local;
-    Pstream::gatherList(procValues, tag);
-    Pstream::scatterList(procValues, tag);
-
-    label n = 0;
-    for (const Field<Type>& v : procValues)
+    else if (Pstream::parRun())
     {
-        n += v.size();
-    }
-    all.setSize(n);
-    n = 0;
-    for (const Field<Type>& v : procValues)
-    {
-        for (const Type& x : v)
-        {
-            all[n++] = x;
-        }
+        FatalErrorInFunction
+            << "Master patch " << master_.name() << ": master data asked for"
+            << " before the pair's first update selected its faces"
+            << abort(FatalError);
     }
     return tall;
+}
+
+
+template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::contactPatchPair::masterSum
+(
+    const Field<Type>& gathered,
+    const int tag
+) const
+{
+    tmp<Field<Type>> tsum(new Field<Type>(gathered));
+    if (masterMap_.valid())
+    {
+        // The map backwards, each face's contributions added on its owner
+        mapDistributeBase::distribute
+        (
+            Pstream::commsTypes::nonBlocking,
+            List<labelPair>(),
+            master_.size(),
+            masterMap_->constructMap(),
+            false,
+            masterMap_->subMap(),
+            false,
+            tsum.ref(),
+            plusEqOp<Type>(),
+            flipOp(),
+            Type(Zero),
+            tag
+        );
+    }
+    return tsum;
 }
 
 
@@ -51,13 +66,11 @@ Foam::tmp<Foam::Field<Type>> Foam::contactPatchPair::sumOverProcessors
     const int tag
 ) const
 {
-    tmp<Field<Type>> tsum(new Field<Type>(gathered));
-    if (Pstream::parRun())
+    if (!masterMap_.valid())
     {
-        Pstream::listCombineGather(tsum.ref(), plusEqOp<Type>(), tag);
-        Pstream::listCombineScatter(tsum.ref(), tag);
+        return tmp<Field<Type>>(new Field<Type>(gathered));
     }
-    return tsum;
+    return gatherMaster(masterSum(gathered, tag)(), tag);
 }
 
 
@@ -67,7 +80,16 @@ Foam::tmp<Foam::Field<Type>> Foam::contactPatchPair::slaveValues
     const UList<Type>& masterLocal
 ) const
 {
-    const Field<Type> all(gatherMaster(masterLocal));
+    return slaveValuesGathered(gatherMaster(masterLocal)());
+}
+
+
+template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::contactPatchPair::slaveValuesGathered
+(
+    const Field<Type>& all
+) const
+{
 
     std::vector<std::vector<int>> faces(overlapFaces_.size());
     std::vector<std::vector<double>> weights(overlapFaces_.size());

@@ -507,7 +507,7 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterDiag() const
             d[masterFace_[s]] += subFaceCoeffs(i, s);
         }
     }
-    return pair_.masterSlice(pair_.sumOverProcessors(d, tag_)());
+    return pair_.masterSum(d, tag_);
 }
 
 
@@ -568,7 +568,7 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::masterNeighbour
             nb[masterFace_[s]] += subFaceCoeffs(i, s)[cmpt]*psi[fc[i]];
         }
     }
-    return pair_.masterSlice(pair_.sumOverProcessors(nb, tag_)());
+    return pair_.masterSum(nb, tag_);
 }
 
 
@@ -585,9 +585,5 @@ void Foam::contactInterfaceCoupling::forces
 
     slavePressure = (slaveForce & normal_)/pair_.slavePatch().magSf();
 
-    masterForce =
-        pair_.masterSlice
-        (
-            pair_.sumOverProcessors(masterTransfer(slaveForce, p)(), tag_)()
-        );
+    masterForce = pair_.masterSum(masterTransfer(slaveForce, p)(), tag_);
 }
