@@ -240,13 +240,15 @@ def bench_case(name, src, entries=None, prepare=None, allrun=None, parallel=Fals
     if require and not converged:
         sys.exit("bench: %s did not converge (rc=%d), see %s" % (name, rc, logfile))
     contact = re.search(r"contactTime = (\S+)", steps[-1][2]) if steps else None
+    search = re.search(r"searchTime = (\S+)", steps[-1][2]) if steps else None
     linear = re.findall(r"^\s+linear solver: (\d+) iterations", log, flags=re.M)
     return dict(name=name, case=case, rc=rc, converged=converged, steps=len(steps),
                 linear=sum(int(n) for n in linear) if linear else None,
                 ncorr=sum(int(s[0]) for s in steps) if steps else None,
                 residual=float(steps[-1][1]) if steps else None,
                 wall=wall, wall_step=wall / max(1, len(steps)),
-                contact=float(contact.group(1)) if contact else None)
+                contact=float(contact.group(1)) if contact else None,
+                search=float(search.group(1)) if search else None)
 
 
 # --------------------------------------------------------------------------
@@ -1308,8 +1310,10 @@ def big_bench():
     """The big case (issue 24): hertzSphere at about 1e6 cells (-refine
     BIG_REFINE), serial and on 2 processors (-parallel): cells, outer
     correctors, the solver's wall time and per corrector, the linear
-    iterations per corrector, the contact update (search, method and
-    transfer: contactTime of the step summary) as a share of the step, the
+    iterations per corrector, the pair's update (moving the surfaces, the
+    search and the overlaps: searchTime of the step summary) and the whole
+    contact update (with the method and the coupling: contactTime) as
+    shares of the step, the
     peak memory of each process (the solver's maxrss), the master faces
     each processor holds against the whole master (the gather-all of
     before), and the strong-scaling efficiency t1/(2 t2). Markdown in
@@ -1317,8 +1321,8 @@ def big_bench():
     print("\n== The big case: hertzSphere -refine %s, serial and on 2 processors" % BIG_REFINE)
     tut = os.path.join(ROOT, "tutorials", "hertzSphere")
     head = ("run", "cells", "correctors", "wall [s]", "wall / corrector [s]",
-            "linear it. / corrector", "contact update / step", "maxrss per process [MB]",
-            "master faces held / all")
+            "linear it. / corrector", "search / contact update / step",
+            "maxrss per process [MB]", "master faces held / all")
     lines = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
     walls = {}
     for parallel in (False, True):
@@ -1343,13 +1347,15 @@ def big_bench():
             print("%-14s not converged (see %s)" % (label, r["case"]))
             continue
         walls[parallel] = r["wall"]
-        share = r["contact"] / (r["wall"] / max(1, r["steps"])) if r["contact"] else float("nan")
+        step = r["wall"] / max(1, r["steps"])
+        share = r["contact"] / step if r["contact"] else float("nan")
+        sshare = r["search"] / step if r["search"] else float("nan")
         heldText = ("%s .. %s / %s" % held[-1]) if held else "all (serial)"
         memText = ", ".join("%.0f" % m for _, m in sorted(mem)) or "-"
-        lines.append("| %s | %s | %d | %.1f | %.3f | %.1f | %.1f %% | %s | %s |" % (
+        lines.append("| %s | %s | %d | %.1f | %.3f | %.1f | %.1f %% / %.1f %% | %s | %s |" % (
             label, cells.group(1) if cells else "?", r["ncorr"], r["wall"],
             r["wall"] / r["ncorr"], r["linear"] / r["ncorr"] if r["linear"] else float("nan"),
-            100 * share, memText, heldText))
+            100 * sshare, 100 * share, memText, heldText))
         print(lines[-1])
     if len(walls) == 2:
         eff = walls[False] / (2 * walls[True])

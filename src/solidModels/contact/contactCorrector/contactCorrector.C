@@ -48,6 +48,7 @@ void Foam::contactCorrector::beginCorrector
         multiplierHistory_.clear();
         nCorrectors_ = 0;
         updateTime_ = 0;
+        searchTime_ = 0;
         normalForce_ = GREAT;
     }
     ++nCorrectors_;
@@ -181,6 +182,7 @@ Foam::contactCorrector::contactCorrector()
     timeIndex_(-1),
     nCorrectors_(0),
     updateTime_(0),
+    searchTime_(0),
     timer_(),
     normalForce_(GREAT),
     multiplierHistory_()
@@ -195,6 +197,7 @@ Foam::contactCorrector::contactCorrector(const contactCorrector& c)
     timeIndex_(c.timeIndex_),
     nCorrectors_(c.nCorrectors_),
     updateTime_(c.updateTime_),
+    searchTime_(c.searchTime_),
     timer_(),
     normalForce_(c.normalForce_),
     multiplierHistory_()
@@ -231,7 +234,11 @@ void Foam::contactCorrector::correct
 
     // 1. Both surfaces in the current configuration, and the projection
     const vectorField Df(centreDisplacement(slave));
-    pair_->update(centreDisplacement(master), Df);
+    {
+        const scalar t0 = timer_.elapsedTime();
+        pair_->update(centreDisplacement(master), Df);
+        searchTime_ += timer_.elapsedTime() - t0;
+    }
     if (newStep)
     {
         pair_->beginStep();

@@ -244,6 +244,7 @@ Foam::contactReporter::row Foam::contactReporter::report() const
     r.activeSetChanges = history_.activeSetChanges();
     r.multiplierUpdates = history_.method().nMultiplierUpdates();
     r.updateTime = returnReduce(corrector_->updateTime(), maxOp<scalar>());
+    r.searchTime = returnReduce(corrector_->searchTime(), maxOp<scalar>());
     return r;
 }
 
@@ -274,7 +275,8 @@ Foam::string Foam::contactReporter::summary() const
     {
         os  << "  multiplierUpdates = " << r.multiplierUpdates;
     }
-    os  << "  contactTime = " << r.updateTime << " s";
+    os  << "  contactTime = " << r.updateTime << " s"
+        << "  searchTime = " << r.searchTime << " s";
     return os.str();
 }
 
