@@ -342,27 +342,11 @@ void Foam::solidContactFvPatchVectorField::updateInterfaceMatrix
 {
     // The matrix's own coefficients for this patch are the explicit source
     // (see setCoefficients); the coupling's are used instead
-    const contactInterfaceCoupling* c = coupling();
-    if (!c)
-    {
-        return;
-    }
-
-    const scalarField nb
+    addNeighbours
     (
-        master()
-      ? c->masterNeighbour(psiInternal, cmpt)
-      : c->slaveNeighbour(psiInternal, cmpt)
+        result, add, psiInternal, cmpt, patch().faceCells(),
+        patch().boundaryMesh()[shadowPatchIndex()].faceCells()
     );
-
-    // The neighbours enter the matrix product with the sign of an internal
-    // face's off-diagonal coefficient
-    const scalar sign = add ? 1 : -1;
-    const labelUList& fc = patch().faceCells();
-    forAll(fc, facei)
-    {
-        result[fc[facei]] += sign*nb[facei];
-    }
 }
 
 
@@ -372,22 +356,36 @@ Foam::label Foam::solidContactFvPatchVectorField::shadowPatchIndex() const
 }
 
 
-Foam::tmp<Foam::scalarField> Foam::solidContactFvPatchVectorField::neighbourSum
+void Foam::solidContactFvPatchVectorField::addNeighbours
 (
+    solveScalarField& result,
+    const bool add,
     const UList<solveScalar>& psi,
     const direction cmpt,
+    const labelUList& ownCells,
     const labelUList& partnerCells
 ) const
 {
     const contactInterfaceCoupling* c = coupling();
     if (!c)
     {
-        return tmp<scalarField>();
+        return;
     }
-    return
+
+    const scalarField nb
+    (
         master()
       ? c->masterNeighbour(psi, cmpt, partnerCells)
-      : c->slaveNeighbour(psi, cmpt, partnerCells);
+      : c->slaveNeighbour(psi, cmpt, partnerCells)
+    );
+
+    // The neighbours enter the matrix product with the sign of an internal
+    // face's off-diagonal coefficient
+    const scalar sign = add ? 1 : -1;
+    forAll(ownCells, facei)
+    {
+        result[ownCells[facei]] += sign*nb[facei];
+    }
 }
 
 

@@ -45,6 +45,21 @@ Foam::contactPatchPair::contactPatchPair
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::boundBox Foam::contactPatchPair::grownBox
+(
+    const UList<point>& x,
+    const scalar r
+)
+{
+    if (x.empty())
+    {
+        return boundBox();
+    }
+    const boundBox bb(x, false);
+    return boundBox(bb.min() - vector::uniform(r), bb.max() + vector::uniform(r));
+}
+
+
 bool Foam::contactPatchPair::selectionStale
 (
     const vectorField& masterD,
@@ -57,27 +72,10 @@ bool Foam::contactPatchPair::selectionStale
     }
     // A slave face whose reach leaves the box, or a master face moved
     // by more than the margin (it may have come into another box)
-    const scalar reach = searchDistance_ + 2*masterFaceSize_;
     const vectorField x(slave_.Cf() + slaveD);
-    bool stale = false;
-    for (const point& p : x)
-    {
-        if
-        (
-            !selectedBox_.contains(p - vector::uniform(reach))
-         || !selectedBox_.contains(p + vector::uniform(reach))
-        )
-        {
-            stale = true;
-            break;
-        }
-    }
-    if (!stale && selectedMasterD_.size() == masterD.size())
-    {
-        stale =
-            masterD.size()
-         && max(mag(masterD - selectedMasterD_)) > selectionMargin();
-    }
+    const bool stale =
+        (x.size() && !selectedBox_.contains(grownBox(x, reach())))
+     || (masterD.size() && max(mag(masterD - selectedMasterD_)) > selectionMargin());
     return returnReduce(stale, orOp<bool>());
 }
 
@@ -114,19 +112,8 @@ void Foam::contactPatchPair::gatherMasterSurface
         }
 
         // This processor's slave faces, where they are, and their reach
-        const vectorField x(slave_.Cf() + slaveD);
-        selectedBox_ = boundBox(x, false);
-        if (x.size())
-        {
-            const vector r
-            (
-                vector::uniform
-                (
-                    searchDistance_ + 2*masterFaceSize_ + selectionMargin()
-                )
-            );
-            selectedBox_ = boundBox(selectedBox_.min() - r, selectedBox_.max() + r);
-        }
+        selectedBox_ =
+            grownBox(slave_.Cf() + slaveD, reach() + selectionMargin());
         List<boundBox> boxes(Pstream::nProcs());
         boxes[Pstream::myProcNo()] = selectedBox_;
         Pstream::gatherList(boxes);
@@ -165,8 +152,7 @@ void Foam::contactPatchPair::gatherMasterSurface
             << " processor " << returnReduce(facePoints.size(), minOp<label>())
             << " .. " << returnReduce(facePoints.size(), maxOp<label>())
             << " of " << gi.size() << " (the reach of its slave faces, "
-            << searchDistance_ + 2*masterFaceSize_ + selectionMargin()
-            << " m)" << endl;
+            << reach() + selectionMargin() << " m)" << endl;
     }
     masterGlobalFace_.transfer(globalFace);
 

@@ -45,7 +45,8 @@ Foam::contactGAMGInterfaceField::contactGAMGInterfaceField
 )
 :
     GAMGInterfaceField(GAMGCp, fineInterface),
-    root_(nullptr)
+    root_(nullptr),
+    partner_(-1)
 {
     if (const auto* coarse = isA<contactGAMGInterfaceField>(fineInterface))
     {
@@ -54,6 +55,10 @@ Foam::contactGAMGInterfaceField::contactGAMGInterfaceField
     else
     {
         root_ = isA<solidContactFvPatchVectorField>(fineInterface);
+    }
+    if (root_)
+    {
+        partner_ = root_->shadowPatchIndex();
     }
 }
 
@@ -79,34 +84,20 @@ void Foam::contactGAMGInterfaceField::updateInterfaceMatrix
     // at the partner patch's index (contactFvMesh lists each contact
     // interface at its patch's index, and GAMG keeps the indices)
     const lduInterfacePtrsList& level = interface().coarseInterfaces();
-    const label partner = root_->shadowPatchIndex();
-    if (partner < 0 || partner >= level.size() || !level.set(partner))
+    if (partner_ < 0 || partner_ >= level.size() || !level.set(partner_))
     {
         FatalErrorInFunction
             << "Contact patch " << root_->patch().name() << ": no GAMG"
-            << " interface of its shadow patch (index " << partner << ") on"
+            << " interface of its shadow patch (index " << partner_ << ") on"
             << " this level; the mesh must list both contact patches"
             << " (contactFvMesh)" << abort(FatalError);
     }
 
-    const tmp<scalarField> tnb
+    root_->addNeighbours
     (
-        root_->neighbourSum(psiInternal, cmpt, level[partner].faceCells())
+        result, add, psiInternal, cmpt, interface().faceCells(),
+        level[partner_].faceCells()
     );
-    if (!tnb.valid())
-    {
-        return;
-    }
-    const scalarField& nb = tnb();
-
-    // The sign of an internal face's off-diagonal coefficient, as on the
-    // finest level (solidContactFvPatchVectorField::updateInterfaceMatrix)
-    const scalar sign = add ? 1 : -1;
-    const labelUList& fc = interface().faceCells();
-    forAll(fc, facei)
-    {
-        result[fc[facei]] += sign*nb[facei];
-    }
 }
 
 

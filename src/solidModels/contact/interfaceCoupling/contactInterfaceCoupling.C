@@ -211,12 +211,7 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
                     vector b(bN*n + bC + R - n*(n & R));
                     if (in.tangentialMultiplier.size())
                     {
-                        b +=
-                            (
-                                in.tangentialCompliance.size()
-                              ? in.tangentialCompliance[i]
-                              : in.compliance[i]
-                            )*in.tangentialMultiplier[i];
+                        b += CT*in.tangentialMultiplier[i];
                     }
                     offset.append(b);
                 }
@@ -514,16 +509,6 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterDiag() const
 Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
 (
     const UList<solveScalar>& psi,
-    const direction cmpt
-) const
-{
-    return slaveNeighbour(psi, cmpt, pair_.masterPatch().faceCells());
-}
-
-
-Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
-(
-    const UList<solveScalar>& psi,
     const direction cmpt,
     const labelUList& masterCells
 ) const
@@ -540,16 +525,6 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
         }
     }
     return tnb;
-}
-
-
-Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::masterNeighbour
-(
-    const UList<solveScalar>& psi,
-    const direction cmpt
-) const
-{
-    return masterNeighbour(psi, cmpt, pair_.slavePatch().faceCells());
 }
 
 
