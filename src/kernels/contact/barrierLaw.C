@@ -60,6 +60,103 @@ NormalLawValue barrierPressure
 }
 
 
+double barrierGapForPressure
+(
+    const double pressure,
+    const double dhat,
+    const double kappa
+)
+{
+    // isgreater: a quiet comparison, NaN raises no invalid-operation flag
+    if (!std::isgreater(pressure, 0.0))
+    {
+        return dhat;
+    }
+
+    // In t = ln(g/dhat) in (lo, 0): p(t) falls from +inf to 0, so that
+    // f(t) = p(t) - pressure changes sign once. lo: 1e-100 dhat, far below
+    // any gap a mesh resolves, and where kappa/x^2 stays a double (deeper,
+    // the law's overflow traps where floating-point exceptions are on); a
+    // pressure beyond p there takes that gap
+    double lo = std::log(1e-100);
+    double hi = 0.0;
+    if (barrierPressure(dhat*std::exp(lo), dhat, kappa).pressure < pressure)
+    {
+        return dhat*std::exp(lo);
+    }
+
+    // A start near the root (Newton in t creeps, a unit a step, from far
+    // off): p ~ kappa dhat^2/g for g << dhat, p ~ 3 kappa dhat u^2 near
+    // dhat (u = 1 - g/dhat, see the header); the smaller gap of the two
+    double t = 0.5*lo;
+    const double far = std::log(kappa*dhat/pressure);
+    const double u = std::sqrt(pressure/(3*kappa*dhat));
+    const double near = u < 1 ? std::log1p(-u) : far;
+    const double guess = far < near ? far : near;
+    if (guess > lo && guess < hi)
+    {
+        t = guess;
+    }
+    for (int iter = 0; iter < 200; ++iter)
+    {
+        const double g = dhat*std::exp(t);
+        const NormalLawValue v = barrierPressure(g, dhat, kappa);
+        const double f = v.pressure - pressure;
+        if (f > 0)
+        {
+            lo = t;
+        }
+        else
+        {
+            hi = t;
+        }
+        // df/dt = dp/dg g; where p saturates (DBL_MAX) the step means
+        // nothing: bisect
+        const double slope = v.dPressureDGap*g;
+        double next = 0.5*(lo + hi);
+        if (v.pressure < DBL_MAX && slope < 0 && std::isfinite(slope))
+        {
+            const double newton = t - f/slope;
+            if (newton > lo && newton < hi)
+            {
+                next = newton;
+                if (std::abs(next - t) <= 1e-15)
+                {
+                    return dhat*std::exp(next);
+                }
+            }
+        }
+        if (hi - lo <= 1e-15)
+        {
+            return dhat*std::exp(next);
+        }
+        t = next;
+    }
+    return dhat*std::exp(t);
+}
+
+
+double barrierLinearisationGap
+(
+    const double gap,
+    const double reaction,
+    const double dhat,
+    const double kappa
+)
+{
+    if (!std::isgreater(reaction, 0.0) || !std::isgreater(gap, 0.0))
+    {
+        return gap;
+    }
+    const double gR = barrierGapForPressure(reaction, dhat, kappa);
+    if (gR > 2*gap)
+    {
+        return std::max(gap, std::min(gR, 0.5*dhat));
+    }
+    return gap;
+}
+
+
 double barrierInitialStiffness
 (
     const double scale,

@@ -13,6 +13,7 @@
 #include "linearizedNormalLaw.H"
 
 #include <gtest/gtest.h>
+#include <cfenv>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -239,6 +240,111 @@ TEST(barrierLaw, infeasibleGapsSaturateNeverNaN)
         EXPECT_EQ(p.pressure, DBL_MAX) << g;
         EXPECT_EQ(p.dPressureDGap, -DBL_MAX) << g;
     }
+}
+
+TEST(barrierLaw, gapForPressureInvertsThePressure)
+{
+    // With the traps OpenFOAM's FOAM_SIGFPE sets: no overflow on the way
+    feenableexcept(FE_OVERFLOW | FE_DIVBYZERO | FE_INVALID);
+    // Round trips over the whole range of the inverse: from a gap a hair
+    // below dhat (p ~ 3 kappa dhat u^2) to 1e-99 dhat (p ~ kappa dhat 1e99),
+    // for stiffnesses from soft to stiff
+    for (const double dh : {1e-7, 1e-4, 1.0})
+    {
+        for (const double kappa : {1.0, 1e7, 1e15})
+        {
+            for (int k = 0; k <= 99; ++k)
+            {
+                const double g = dh*(k == 0 ? 1 - 1e-6 : std::pow(10.0, -k));
+                const double p = barrierPressure(g, dh, kappa).pressure;
+                ASSERT_TRUE(p > 0 && p < DBL_MAX) << g;
+                const double back = barrierGapForPressure(p, dh, kappa);
+                EXPECT_NEAR(back, g, 1e-12*g) << "dhat " << dh << " kappa " << kappa;
+                EXPECT_GT(back, 0.0);
+                EXPECT_LT(back, dh);
+            }
+        }
+    }
+    fedisableexcept(FE_ALL_EXCEPT);
+}
+
+TEST(barrierLaw, gapForPressureDegenerateInputs)
+{
+    // No pressure (or NaN): the face is at dhat, where the law starts; a
+    // pressure beyond the law's at 1e-100 dhat: that gap, still > 0
+    const double dh = 1e-4, kappa = 1e7;
+    for (const double p :
+        {0.0, -0.0, -1.0, -DBL_MAX, std::numeric_limits<double>::quiet_NaN()})
+    {
+        EXPECT_EQ(barrierGapForPressure(p, dh, kappa), dh) << p;
+    }
+    feenableexcept(FE_OVERFLOW | FE_DIVBYZERO);
+    for (const double p :
+        {DBL_MAX, std::numeric_limits<double>::infinity()})
+    {
+        const double g = barrierGapForPressure(p, dh, kappa);
+        EXPECT_GT(g, 0.0) << p;
+        EXPECT_NEAR(g, 1e-100*dh, 1e-110*dh) << p;
+    }
+    // The tangent at the inverted gap: its secant to a nearby pressure
+    // agrees (the inverse is differentiable with slope 1/p')
+    const double p0 = 1e4, dp = 1e-3;
+    const double g0 = barrierGapForPressure(p0, dh, kappa);
+    const double slope = barrierPressure(g0, dh, kappa).dPressureDGap;
+    const double fd =
+        (barrierGapForPressure(p0 + dp, dh, kappa)
+       - barrierGapForPressure(p0 - dp, dh, kappa))/(2*dp);
+    EXPECT_NEAR(fd*slope, 1.0, 1e-6);
+    fedisableexcept(FE_ALL_EXCEPT);
+}
+
+TEST(barrierLaw, linearisationGapIsTheReactionsWhereNewtonCreeps)
+{
+    feenableexcept(FE_OVERFLOW | FE_DIVBYZERO | FE_INVALID);
+    const double dh = 1e-4, kappa = 1e7;
+    const double NaN = std::numeric_limits<double>::quiet_NaN();
+    // The patch test's state: p_r = 1e4 Pa, whose gap is G ~ 1.2e-5 m
+    const double pr = 1e4;
+    const double G = barrierGapForPressure(pr, dh, kappa);
+    ASSERT_GT(G, 1e-6);
+    ASSERT_LT(G, 0.5*dh);
+    // A face the limiter took far below G: linearised at G, whose
+    // tangent predicts the gap that carries p_r (the point is on the law)
+    for (const double g : {1e-17, 1e-10, 0.49*G})
+    {
+        const double gs = barrierLinearisationGap(g, pr, dh, kappa);
+        EXPECT_DOUBLE_EQ(gs, G) << g;
+        EXPECT_NEAR(barrierPressure(gs, dh, kappa).pressure, pr, 1e-9*pr);
+    }
+    // Within a doubling of G, or beyond it: Newton from g itself
+    for (const double g : {0.5*G, 0.51*G, G, 2*G, 0.99*dh, dh})
+    {
+        EXPECT_EQ(barrierLinearisationGap(g, pr, dh, kappa), g) << g;
+    }
+    // A small reaction (G near dhat) is capped at dhat/2, and never
+    // below g: over a sweep of gaps and reactions g <= g* <= max(g, dhat/2)
+    for (int i = 0; i <= 40; ++i)
+    {
+        const double g = dh*std::pow(10.0, -0.25*i);
+        for (const double p : {1e-6, 1.0, 1e2, 1e4, 1e6, 1e9, 1e15})
+        {
+            const double gs = barrierLinearisationGap(g, p, dh, kappa);
+            EXPECT_GE(gs, g) << g << " " << p;
+            EXPECT_LE(gs, std::max(g, 0.5*dh)) << g << " " << p;
+        }
+    }
+    EXPECT_EQ(barrierLinearisationGap(1e-8, 1e-6, dh, kappa), 0.5*dh);
+    // No compressive reaction, NaN, or a gap that is not open: g itself
+    // (the method refuses closed gaps before it gets here)
+    fedisableexcept(FE_INVALID);
+    for (const double p : {0.0, -1.0, -DBL_MAX, NaN})
+    {
+        EXPECT_EQ(barrierLinearisationGap(1e-8, p, dh, kappa), 1e-8) << p;
+    }
+    EXPECT_EQ(barrierLinearisationGap(0.0, pr, dh, kappa), 0.0);
+    EXPECT_EQ(barrierLinearisationGap(-1e-8, pr, dh, kappa), -1e-8);
+    EXPECT_TRUE(std::isnan(barrierLinearisationGap(NaN, pr, dh, kappa)));
+    fedisableexcept(FE_ALL_EXCEPT);
 }
 
 TEST(barrierLaw, stepLimitKeepsTheFraction)

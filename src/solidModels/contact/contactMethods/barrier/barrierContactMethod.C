@@ -276,12 +276,19 @@ void Foam::contactMethods::barrier::correct
         const bool active = state.inRange[facei] && g < dhat_;
         if (active)
         {
-            // The Newton step: the law's tangent at the current gap
+            // The Newton step: the law's tangent at the current gap, or,
+            // for a face far closer than its reaction asks, at the gap
+            // its reaction gives
+            const scalar gStar =
+                c4f::contact::barrierLinearisationGap
+                (
+                    g, state.reaction[facei], dhat_, k[facei]
+                );
             const c4f::contact::LinearizedNormalLaw lin =
                 c4f::contact::linearizeNormalLaw
                 (
-                    c4f::contact::barrierPressure(g, dhat_, k[facei]),
-                    g
+                    c4f::contact::barrierPressure(gStar, dhat_, k[facei]),
+                    gStar
                 );
             cond.coupled[facei] = lin.coupled;
             cond.compliance[facei] = lin.compliance;

@@ -109,13 +109,21 @@ void Foam::frictionModel::updateSlip
 
 void Foam::frictionModel::noteReleases(const contactSlaveCondition& cond)
 {
-    if (!tieClosing_ && wasCoupled_.size() == cond.coupled.size())
+    if
+    (
+        !tieClosing_
+     && wasCoupled_.size() == cond.coupled.size()
+     && releases_.size() == cond.coupled.size()
+    )
     {
         forAll(wasCoupled_, facei)
         {
             if (wasCoupled_[facei] && !cond.coupled[facei])
             {
-                closedAtStart_[facei] = false;
+                if (++releases_[facei] > 1)
+                {
+                    closedAtStart_[facei] = false;
+                }
             }
         }
     }
@@ -148,6 +156,7 @@ Foam::frictionModel::frictionModel
     slipAtStepStart_(patch.size(), Zero),
     closedAtStart_(),
     wasCoupled_(),
+    releases_(),
     tieClosing_(false),
     multipliersConverged_(true)
 {
@@ -187,6 +196,7 @@ void Foam::frictionModel::beginStep
     multipliersConverged_ = true;
     slipAtStepStart_ = state_.field<vector>("contactSlip");
     closedAtStart_.setSize(stick.size());
+    releases_ = labelList(stick.size(), 0);
     wasCoupled_ = cond.coupled;
     forAll(stick, facei)
     {
