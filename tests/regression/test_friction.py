@@ -182,7 +182,7 @@ def test_stick_patch_test_barrier_converges_tied():
     reaction asks is linearised at the gap the reaction gives), and the
     one face a far-from-equilibrium iterate carried past dhat lost its tie
     (frictionModel::noteReleases forgives one release), its shear 33 %
-    off. Now: the step converges (measured 30 correctors, the Lagrange
+    off. Now: the step converges (measured 33 correctors, the Lagrange
     multiplier 25), the law holds at every face to 1e-5 of the largest
     pressure, every face sticks, the mean shear is tau to 1e-5 (measured
     6.8e-6), and the stress is uniform to 1e-4 (measured 1.1e-5; the

@@ -149,7 +149,7 @@ double barrierLinearisationGap
         return gap;
     }
     const double gR = barrierGapForPressure(reaction, dhat, kappa);
-    if (gR > 2*gap)
+    if (gR > 10*gap)
     {
         return std::max(gap, std::min(gR, 0.5*dhat));
     }

@@ -310,14 +310,14 @@ TEST(barrierLaw, linearisationGapIsTheReactionsWhereNewtonCreeps)
     ASSERT_LT(G, 0.5*dh);
     // A face the limiter took far below G: linearised at G, whose
     // tangent predicts the gap that carries p_r (the point is on the law)
-    for (const double g : {1e-17, 1e-10, 0.49*G})
+    for (const double g : {1e-17, 1e-10, 0.099*G})
     {
         const double gs = barrierLinearisationGap(g, pr, dh, kappa);
         EXPECT_DOUBLE_EQ(gs, G) << g;
         EXPECT_NEAR(barrierPressure(gs, dh, kappa).pressure, pr, 1e-9*pr);
     }
-    // Within a doubling of G, or beyond it: Newton from g itself
-    for (const double g : {0.5*G, 0.51*G, G, 2*G, 0.99*dh, dh})
+    // Within a factor of ten of G, or beyond it: Newton from g itself
+    for (const double g : {0.11*G, 0.5*G, G, 2*G, 0.99*dh, dh})
     {
         EXPECT_EQ(barrierLinearisationGap(g, pr, dh, kappa), g) << g;
     }
