@@ -184,7 +184,7 @@ def test_stick_patch_test_barrier_converges_tied():
     (frictionModel::noteReleases forgives one release), its shear 33 %
     off. Now: the step converges (measured 33 correctors, the Lagrange
     multiplier 25), the law holds at every face to 1e-5 of the largest
-    pressure, every face sticks, the mean shear is tau to 1e-5 (measured
+    pressure, every face sticks, the mean shear is tau to 1e-4 (measured
     6.8e-6), and the stress is uniform to 1e-4 (measured 1.1e-5; the
     exact methods 1e-6, the frictionless barrier 4e-11; compareStick's
     own 1e-6 for a non-exact method with stick is the open question of
@@ -206,14 +206,20 @@ def test_stick_patch_test_barrier_converges_tied():
                               key="contactStick")
     ck.add(name + "/every_face_sticks", min(stick) == 1, min(stick), 1, 1 - min(stick), 0,
            note="(contactStick of lowerTop at t = %s)" % t)
-    for c in r["checks"]:
-        if c["name"].endswith("stress_uniformity"):
-            ck.add(name + "/stress_uniform", c["value"] <= 1e-4, c["value"], 0.0,
-                   c["value"], 1e-4, note="((max - min)/max |sigma| over the cells)")
+    # compareStick's uniformity check of a non-exact method (its own
+    # tolerance 1e-6 is the open question of its header): exactly one
+    uniform = [c for c in r["checks"] if c["name"].endswith("stress_uniformity")]
+    ck.add(name + "/uniformity_checked", len(uniform) == 1, len(uniform), 1,
+           abs(len(uniform) - 1), 0, note="(compareStick's stress_uniformity checks)")
+    for c in uniform:
+        ck.add(name + "/stress_uniform", c["value"] <= 1e-4, c["value"], 0.0,
+               c["value"], 1e-4, note="((max - min)/max |sigma| over the cells)")
+    # The mean shear is tau to the same 1e-4 (measured 6.8e-6)
+    tau = float(foamio.read_entry(os.path.join(case, "0", "D"), "tauRight"))
     sigma = foamio.read_internal(os.path.join(case, t, "sigma"))
     sxy = sum(x[1] for x in sigma)/len(sigma)
-    e = abs(sxy/2500.0 - 1)
-    ck.add(name + "/mean_shear", e <= 1e-5, sxy, 2500.0, e, 1e-5, note="[Pa] (tau of 0/D)")
+    e = abs(sxy/tau - 1)
+    ck.add(name + "/mean_shear", e <= 1e-4, sxy, tau, e, 1e-4, note="[Pa] (0/D's tauRight)")
     ck.verify()
 
 

@@ -89,7 +89,9 @@ double barrierGapForPressure
     // off): p ~ kappa dhat^2/g for g << dhat, p ~ 3 kappa dhat u^2 near
     // dhat (u = 1 - g/dhat, see the header); the smaller gap of the two
     double t = 0.5*lo;
-    const double far = std::log(kappa*dhat/pressure);
+    // (as a difference of logarithms: kappa dhat/p overflows for a
+    // denormal p, which a trap on overflow stops)
+    const double far = std::log(kappa) + std::log(dhat) - std::log(pressure);
     const double u = std::sqrt(pressure/(3*kappa*dhat));
     const double near = u < 1 ? std::log1p(-u) : far;
     const double guess = far < near ? far : near;
@@ -148,12 +150,15 @@ double barrierLinearisationGap
     {
         return gap;
     }
-    const double gR = barrierGapForPressure(reaction, dhat, kappa);
-    if (gR > 10*gap)
+    // G(p_r) > 10 g  <=>  p_r < p(10 g), p strictly decreasing on (0, dhat)
+    // and 0 beyond: one evaluation of the law for most faces, the
+    // inverse only for those it rescues
+    if (!(reaction < barrierPressure(10*gap, dhat, kappa).pressure))
     {
-        return std::max(gap, std::min(gR, 0.5*dhat));
+        return gap;
     }
-    return gap;
+    const double gR = barrierGapForPressure(reaction, dhat, kappa);
+    return std::max(gap, std::min(gR, 0.5*dhat));
 }
 
 

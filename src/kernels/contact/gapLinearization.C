@@ -113,17 +113,22 @@ GapLinearization linearizeTriangleGap
     L.hessian.block<3, 12>(6, 0) = Jgb;
     L.hessian.block<3, 12>(9, 0) = Jgc;
 
-    // The projection's coordinates: m xi = (e1.r, e2.r)
-    Eigen::Matrix2d m;
-    m << e1.dot(e1), e1.dot(e2),
-         e2.dot(e1), e2.dot(e2);
-    const Eigen::Matrix2d mInv(m.inverse());
-    L.xi = mInv*Eigen::Vector2d(e1.dot(r), e2.dot(r));
+    // The projection's coordinates by the dual basis of (e1, e2) in the
+    // plane, d_a.e_b = delta_ab: xi_a = d_a.r. Not by inverting the metric
+    // m_ab = e_a.e_b, whose determinant loses every digit to cancellation
+    // once the triangle's angle is below about 1e-8 (a sliver of aspect
+    // 1e-8 gave xi = (0.25, 0) for (0.25, 0.1), thinner ones NaN)
+    const Eigen::Vector3d d1(e2.cross(n)/A);
+    const Eigen::Vector3d d2(n.cross(e1)/A);
+    L.xi = Eigen::Vector2d(d1.dot(r), d2.dot(r));
+    // d xi_a = m^ab [e_b.(dr - xi1 de1 - xi2 de2) + g n.de_b], m^ab =
+    // d_a.d_b and m^ab e_b = d_a
     const Jacobian Jproj(Jr - L.xi(0)*Je1 - L.xi(1)*Je2);
-    Eigen::Matrix<double, 2, 12> rhs;
-    rhs.row(0) = e1.transpose()*Jproj + g*n.transpose()*Je1;
-    rhs.row(1) = e2.transpose()*Jproj + g*n.transpose()*Je2;
-    L.xiGradient = mInv*rhs;
+    const Eigen::Matrix<double, 1, 12> nJe1(n.transpose()*Je1);
+    const Eigen::Matrix<double, 1, 12> nJe2(n.transpose()*Je2);
+    const double m11 = d1.dot(d1), m12 = d1.dot(d2), m22 = d2.dot(d2);
+    L.xiGradient.row(0) = d1.transpose()*Jproj + g*(m11*nJe1 + m12*nJe2);
+    L.xiGradient.row(1) = d2.transpose()*Jproj + g*(m12*nJe1 + m22*nJe2);
 
     return L;
 }

@@ -7,6 +7,7 @@
 
 #include "gapLinearization.H"
 #include "normalGap.H"
+#include "../fpeTraps.H"
 
 #include <gtest/gtest.h>
 #include <cmath>
@@ -65,11 +66,18 @@ TEST(gapLinearization, gapNormalAndCoordinatesOfAKnownTriangle)
     EXPECT_NEAR(L.gradient(2), 1.0, 1e-15);
     EXPECT_NEAR(L.xiGradient.col(2).norm(), 0, 1e-15);
     // A rigid translation of all four points changes nothing: the
-    // gradient's blocks sum to zero, and so do the Hessian's
+    // gradient's blocks sum to zero, and the Hessian maps a translation to
+    // zero
     for (int d = 0; d < 3; ++d)
     {
         EXPECT_NEAR(L.gradient(d) + L.gradient(3 + d) + L.gradient(6 + d)
                   + L.gradient(9 + d), 0, 1e-15);
+        X12 shift(X12::Zero());
+        for (int node = 0; node < 4; ++node)
+        {
+            shift(3*node + d) = 1;
+        }
+        EXPECT_NEAR((L.hessian*shift).norm(), 0, 1e-14) << d;
     }
 }
 
@@ -210,10 +218,35 @@ TEST(gapLinearization, degenerateInputIsReportedNotDivided)
         EXPECT_TRUE(L.xiGradient.allFinite());
         EXPECT_EQ(L.hessian.norm(), 0.0);
     }
-    // A sliver of aspect 1e-8 is still a triangle: finite everything
+    // A sliver of aspect 1e-8 is still a triangle: finite everything, and
+    // the projection's coordinates right (by the metric's inverse they
+    // were (0.25, 0), and NaN for thinner ones)
     const GapLinearization L =
         at(pack(V(0.3, 1e-9, 0.1), V(0, 0, 0), V(1, 0, 0), V(0.5, 1e-8, 0)));
     EXPECT_TRUE(L.valid);
     EXPECT_TRUE(L.hessian.allFinite());
+    EXPECT_TRUE(L.xiGradient.allFinite());
     EXPECT_NEAR(L.gap, 0.1, 1e-12);
+    EXPECT_NEAR(L.xi(0), 0.25, 1e-12);
+    EXPECT_NEAR(L.xi(1), 0.1, 1e-12);
+}
+
+TEST(gapLinearization, sliversKeepTheirCoordinates)
+{
+    // Angles from 1e-6 down to 1e-13 rad, with the traps OpenFOAM's
+    // FOAM_SIGFPE sets: x2 over the point with xi = (0.4, 0.3)
+    const FpeTraps traps(FE_OVERFLOW | FE_DIVBYZERO | FE_INVALID);
+    for (const double s : {1e-6, 1e-8, 1e-10, 1e-13})
+    {
+        const GapLinearization L = linearizeTriangleGap
+        (
+            V(0.7, 0.3*s, 0.1), V(0, 0, 0), V(1, 0, 0), V(1, s, 0)
+        );
+        EXPECT_TRUE(L.valid) << s;
+        EXPECT_NEAR(L.xi(0), 0.4, 1e-12) << s;
+        EXPECT_NEAR(L.xi(1), 0.3, 1e-12) << s;
+        EXPECT_NEAR(L.gap, 0.1, 1e-15) << s;
+        EXPECT_TRUE(L.xiGradient.allFinite()) << s;
+        EXPECT_TRUE(L.hessian.allFinite()) << s;
+    }
 }
