@@ -186,10 +186,10 @@ def test_stick_patch_test_barrier_converges_tied():
     off. Now: the step converges (measured 33 correctors, the Lagrange
     multiplier 25), the law holds at every face to 1e-5 of the largest
     pressure, every face sticks, the mean shear is tau to 1e-4 (measured
-    6.8e-6), and the stress is uniform to 1e-4 (measured 1.1e-5; the
-    exact methods 1e-6, the frictionless barrier 4e-11; compareStick's
-    own 1e-6 for a non-exact method with stick is the open question of
-    its header, penalty 4.5e-3)."""
+    6.8e-6), and the stress is uniform to 1e-4 (measured 1.1e-5: the
+    shear's moment across the barrier's gap, in proportion to it, see
+    compareStick's header; the exact methods 1e-6, the frictionless
+    barrier 4e-11, penalty with stick 4.5e-3)."""
     ck = harness.Checks()
     name = "contactPatchTestStick_barrier"
     r = harness.tutorial_run("contactPatchTest", name,
