@@ -218,6 +218,10 @@ void Foam::solidContactFvPatchVectorField::updateCoeffs()
         return;
     }
 
+    // The mesh lists the interface of every contact patch, a rigid tool's
+    // too: the matrix lists every lduInterfaceField, and GAMG needs the
+    // mesh's interface where the field has one (a rigid tool's adds no
+    // neighbours, updateInterfaceMatrix)
     registerInterface(internalField().name());
 
     if (master())
@@ -252,7 +256,7 @@ void Foam::solidContactFvPatchVectorField::updateCoeffs()
     }
     else
     {
-        corrector_.correct(*this, shadow(), settings_, history_);
+        corrector_.correct(*this, shadowPtr(), settings_, history_);
         setCoefficients
         (
             contactForce(primitiveField()),
@@ -340,6 +344,13 @@ void Foam::solidContactFvPatchVectorField::updateInterfaceMatrix
     const Pstream::commsTypes
 ) const
 {
+    // Against a rigid tool there are no neighbours: the patch's own
+    // coefficients (setCoefficients) are all of the coupling
+    if (settings_.rigid())
+    {
+        return;
+    }
+
     // The matrix's own coefficients for this patch are the explicit source
     // (see setCoefficients); the coupling's are used instead
     addNeighbours
@@ -418,8 +429,17 @@ void Foam::solidContactFvPatchVectorField::rmap
 void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
 {
     fvPatchVectorField::write(os);
-    os.writeEntry("shadowPatch", shadowPatchName());
-    os.writeEntry("master", Switch(master()));
+    if (settings_.rigid())
+    {
+        os.beginBlock("rigidSurface");
+        settings_.rigidSurfaceDict().write(os, false);
+        os.endBlock();
+    }
+    else
+    {
+        os.writeEntry("shadowPatch", shadowPatchName());
+        os.writeEntry("master", Switch(master()));
+    }
     if (!master())
     {
         os.writeEntry("method", history_.method().methodName());

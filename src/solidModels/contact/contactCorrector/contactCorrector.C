@@ -29,6 +29,18 @@ Foam::tmp<Foam::vectorField> centreDisplacement(const Foam::fvPatchVectorField& 
     return D + Foam::solidPatchTractions::faceCorrection(D.patch());
 }
 
+//- The master patch's face-centre displacements; none for a rigid tool
+Foam::tmp<Foam::vectorField> masterDisplacement
+(
+    const Foam::fvPatchVectorField* master
+)
+{
+    return
+        master
+      ? centreDisplacement(*master)
+      : Foam::tmp<Foam::vectorField>(new Foam::vectorField());
+}
+
 } // End anonymous namespace
 
 
@@ -58,7 +70,7 @@ void Foam::contactCorrector::beginCorrector
 void Foam::contactCorrector::build
 (
     const fvPatch& slave,
-    const fvPatch& master,
+    const fvPatch* master,
     contactSettings& settings
 )
 {
@@ -71,20 +83,41 @@ void Foam::contactCorrector::build
             10*returnReduce(h.size() ? max(h) : 0, maxOp<scalar>())
         );
     }
-    pair_.reset
-    (
-        new contactPatchPair
+    if (settings.rigid())
+    {
+        if (!tool_.valid())
+        {
+            tool_ =
+                rigidSurface::New
+                (
+                    settings.rigidSurfaceDict(), slave.boundaryMesh().mesh()
+                );
+        }
+        pair_.reset
         (
-            slave, master, settings.searchDistance(),
-            settings.smoothedNormals(), settings.rebuildTolerance()
-        )
-    );
+            new rigidContactPair(slave, tool_(), settings.searchDistance())
+        );
+    }
+    else
+    {
+        pair_.reset
+        (
+            new contactPatchPair
+            (
+                slave, *master, settings.searchDistance(),
+                settings.smoothedNormals(), settings.rebuildTolerance()
+            )
+        );
+    }
+    // A rigid tool has no faces to pose the constraint on
     coupling_.reset
     (
         new contactInterfaceCoupling
         (
             pair_(),
-            contactConstraintGroups::sideNames[settings.constraintFaces()]
+            settings.rigid()
+          ? contactConstraintGroups::side::slave
+          : contactConstraintGroups::sideNames[settings.constraintFaces()]
         )
     );
 }
@@ -216,7 +249,7 @@ void Foam::contactCorrector::clearGeometry()
 void Foam::contactCorrector::correct
 (
     const fixedGradientFvPatchVectorField& slave,
-    const fvPatchVectorField& master,
+    const fvPatchVectorField* master,
     contactSettings& settings,
     contactHistory& h
 )
@@ -229,14 +262,14 @@ void Foam::contactCorrector::correct
     const bool firstUpdate = !pair_.valid();
     if (firstUpdate)
     {
-        build(patch, master.patch(), settings);
+        build(patch, master ? &master->patch() : nullptr, settings);
     }
 
     // 1. Both surfaces in the current configuration, and the projection
     const vectorField Df(centreDisplacement(slave));
     {
         const scalar t0 = timer_.elapsedTime();
-        pair_->update(centreDisplacement(master), Df);
+        pair_->update(masterDisplacement(master), Df);
         searchTime_ += timer_.elapsedTime() - t0;
     }
     if (newStep)
@@ -398,7 +431,7 @@ void Foam::contactCorrector::checkPassedThrough(const fvPatch& slave) const
         << time.timeName() << ": " << n << " of its "
         << returnReduce(slave.size(), sumOp<label>())
         << " faces passed through the master patch "
-        << pair_->masterPatch().name() << " within the load step: they lie up"
+        << pair_->masterName() << " within the load step: they lie up"
         << " to " << maxDepth << " m behind the master faces they faced at"
         << " the step's start, beyond the search distance "
         << pair_->searchDistance() << " m, where the search sees no"
@@ -456,7 +489,7 @@ bool Foam::contactCorrector::updateMultipliers
 Foam::scalar Foam::contactCorrector::stepLimit
 (
     const fvPatchVectorField& slave,
-    const fvPatchVectorField& master,
+    const fvPatchVectorField* master,
     const contactHistory& h
 )
 {
@@ -470,7 +503,7 @@ Foam::scalar Foam::contactCorrector::stepLimit
     // The gaps at the current D (the update's), by the same search as a
     // corrector's; lastState_ holds those the corrector started from
     const vectorField Df(centreDisplacement(slave));
-    pair_->update(centreDisplacement(master), Df);
+    pair_->update(masterDisplacement(master), Df);
 
     const scalar alpha = returnReduce
     (

@@ -890,3 +890,29 @@ void Foam::contactPatchPair::gatherMasterData
         gatherMaster(solidPatchTractions::faceCorrection(master_)());
     magSf = gatherMaster(master_.magSf());
 }
+
+
+Foam::tmp<Foam::vectorField> Foam::contactPatchPair::masterCellValues
+(
+    const vectorField& D,
+    const int tag
+) const
+{
+    return gatherMaster(vectorField(D, master_.faceCells()), tag);
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::contactPatchPair::masterCellValues
+(
+    const UList<solveScalar>& psi,
+    const labelUList& masterCells,
+    const int tag
+) const
+{
+    scalarField local(masterCells.size());
+    forAll(masterCells, facei)
+    {
+        local[facei] = psi[masterCells[facei]];
+    }
+    return gatherMaster(local, tag);
+}

@@ -82,7 +82,11 @@ void Foam::contactSettings::checkPatch
             << exit(FatalIOError);
     }
 
-    if (shadowPatchName_ == patch.name())
+    if (rigid_)
+    {
+        // No shadow to check; the tool's own entries are its class's
+    }
+    else if (shadowPatchName_ == patch.name())
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'shadowPatch " << shadowPatchName_ << "' of "
@@ -90,7 +94,7 @@ void Foam::contactSettings::checkPatch
             << " other patch of the contact pair" << exit(FatalIOError);
     }
 
-    if (patch.boundaryMesh().findPatchID(shadowPatchName_) < 0)
+    if (!rigid_ && patch.boundaryMesh().findPatchID(shadowPatchName_) < 0)
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'shadowPatch " << shadowPatchName_ << "' of "
@@ -167,11 +171,44 @@ void Foam::contactSettings::checkShadow
 }
 
 
+void Foam::contactSettings::checkRigid(const dictionary& dict) const
+{
+    if (!dict.isDict("rigidSurface"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'rigidSurface' of " << dict.name() << " must be a"
+            << " dictionary with the tool's type (plane, sphere, cylinder,"
+            << " triSurface), its geometry and its motion"
+            << exit(FatalIOError);
+    }
+    for (const word pairOnly : {"shadowPatch", "master"})
+    {
+        if (dict.found(pairOnly))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << pairOnly << "' of " << dict.name()
+                << " beside 'rigidSurface': a patch touches either another"
+                << " patch (shadowPatch and master) or a rigid tool"
+                << " (rigidSurface); remove one" << exit(FatalIOError);
+        }
+    }
+    if (dict.found("constraintFaces") && constraintFaces_ == "master")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'constraintFaces master' of " << dict.name()
+            << ": a rigid tool has no faces to pose the constraint on;"
+            << " valid are slave and auto (both one constraint per slave"
+            << " face here)" << exit(FatalIOError);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactSettings::contactSettings()
 :
     dict_(),
+    rigid_(false),
     shadowPatchName_(),
     master_(false),
     searchDistance_(-1),
@@ -190,8 +227,12 @@ Foam::contactSettings::contactSettings
 )
 :
     dict_(dict),
-    shadowPatchName_(dict.get<word>("shadowPatch")),
-    master_(dict.get<bool>("master")),
+    rigid_(dict.found("rigidSurface")),
+    shadowPatchName_
+    (
+        rigid_ ? word::null : dict.get<word>("shadowPatch")
+    ),
+    master_(rigid_ ? false : dict.get<bool>("master")),
     searchDistance_(dict.getOrDefault<scalar>("searchDistance", -1)),
     normals_(dict.getOrDefault<word>("normals", "faces")),
     rebuildTolerance_(dict.getOrDefault<scalar>("rebuildTolerance", 0)),
@@ -214,10 +255,18 @@ Foam::contactSettings::contactSettings
         }
     }
 
+    if (rigid_)
+    {
+        checkRigid(dict);
+    }
+
     // The originals: a copied dictionary has no parent (the boundaryField
     // that holds the shadow's entry)
     checkPatch(patch, dict);
-    checkShadow(patch, dict, typeName);
+    if (!rigid_)
+    {
+        checkShadow(patch, dict, typeName);
+    }
 
     if (master_)
     {

@@ -20,7 +20,7 @@ Foam::contactConstraintGroups::sideNames
 
 Foam::contactConstraintGroups::contactConstraintGroups
 (
-    const contactPatchPair& pair,
+    const contactPair& pair,
     const side s,
     const int tag
 )

@@ -56,6 +56,11 @@ Foam::contactGAMGInterfaceField::contactGAMGInterfaceField
     {
         root_ = isA<solidContactFvPatchVectorField>(fineInterface);
     }
+    // A patch against a rigid tool has no partner cells on any level
+    if (root_ && root_->rigid())
+    {
+        root_ = nullptr;
+    }
     if (root_)
     {
         partner_ = root_->shadowPatchIndex();

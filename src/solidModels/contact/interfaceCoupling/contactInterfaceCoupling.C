@@ -7,32 +7,6 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-template<class Type>
-Foam::tmp<Foam::Field<Type>> Foam::contactInterfaceCoupling::masterCellValues
-(
-    const UList<Type>& cellValues
-) const
-{
-    return masterCellValues(cellValues, pair_.masterPatch().faceCells());
-}
-
-
-template<class Type>
-Foam::tmp<Foam::Field<Type>> Foam::contactInterfaceCoupling::masterCellValues
-(
-    const UList<Type>& cellValues,
-    const labelUList& fc
-) const
-{
-    Field<Type> local(fc.size());
-    forAll(fc, facei)
-    {
-        local[facei] = cellValues[fc[facei]];
-    }
-    return pair_.gatherMaster(local, tag_);
-}
-
-
 Foam::vector Foam::contactInterfaceCoupling::implicitWeights
 (
     const vector& n,
@@ -99,7 +73,7 @@ Foam::vector Foam::contactInterfaceCoupling::subFaceTraction
 
 Foam::contactInterfaceCoupling::contactInterfaceCoupling
 (
-    const contactPatchPair& pair,
+    const contactPair& pair,
     const contactConstraintGroups::side constraintFaces
 )
 :
@@ -319,7 +293,7 @@ void Foam::contactInterfaceCoupling::correctDeferred
     // fixed point; Anderson's secant step on the sweeps is GMRES on the
     // affine map (Walker & Ni 2011) and needs about as many sweeps as the
     // map has distinct clusters of eigenvalues.
-    const vectorField DM(masterCellValues(D));
+    const vectorField DM(pair_.masterCellValues(D, tag_));
     const scalarField& magSf = pair_.slavePatch().magSf();
     const List<vector> base(offset_);
     const label nSub = offset_.size();
@@ -513,7 +487,7 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
     const labelUList& masterCells
 ) const
 {
-    const scalarField psiM(masterCellValues(psi, masterCells));
+    const scalarField psiM(pair_.masterCellValues(psi, masterCells, tag_));
 
     tmp<scalarField> tnb(new scalarField(normal_.size(), 0));
     scalarField& nb = tnb.ref();
@@ -556,7 +530,7 @@ void Foam::contactInterfaceCoupling::forces
 ) const
 {
     List<vector> p;
-    slaveForces(D, masterCellValues(D), slaveForce, p);
+    slaveForces(D, pair_.masterCellValues(D, tag_), slaveForce, p);
 
     slavePressure = (slaveForce & normal_)/pair_.slavePatch().magSf();
 
