@@ -233,6 +233,23 @@ Foam::contactReporter::row Foam::contactReporter::report() const
       ? minGap(corrector_->pair().gap(), corrector_->pair().inRange())
       : GREAT;
 
+    if (searched && corrector_->tool())
+    {
+        // The tool receives -F_i at each face's closest point on it
+        const rigidSurface& tool = *corrector_->tool();
+        const scalar t = patch_.boundaryMesh().mesh().time().value();
+        r.rigid = true;
+        r.toolTranslation = tool.translation(t);
+        const point c = tool.centreOfRotation() + r.toolTranslation;
+        const vectorField& xbar =
+            dynamic_cast<const rigidContactPair&>(corrector_->pair()).footPoints();
+        forAll(A, facei)
+        {
+            r.toolMoment -= (xbar[facei] - c) ^ (traction[facei]*A[facei]);
+        }
+        reduce(r.toolMoment, sumOp<vector>());
+    }
+
     reduce(r.normalForce, sumOp<scalar>());
     reduce(r.tangentialForce, sumOp<scalar>());
     reduce(r.force, sumOp<vector>());

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "contactReport.H"
+#include "MeshedSurfaces.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "solidContactFvPatchVectorField.H"
@@ -46,6 +47,15 @@ void Foam::functionObjects::contactReport::findSlaves()
         }
     }
     slavePatches_.transfer(slaves);
+    rigid_.setSize(slavePatches_.size());
+    forAll(slavePatches_, i)
+    {
+        rigid_[i] =
+            refCast<const solidContactFvPatchVectorField>
+            (
+                D.boundaryField()[slavePatches_[i]]
+            ).rigid();
+    }
     multiplierFiles_.setSize(slavePatches_.size());
     resetNames(names);
 
@@ -154,6 +164,44 @@ void Foam::functionObjects::contactReport::writeMultipliers(const label i)
 }
 
 
+void Foam::functionObjects::contactReport::writeTool(const label i) const
+{
+    const volVectorField& D = mesh_.lookupObject<volVectorField>(fieldName_);
+    const solidContactFvPatchVectorField& pf =
+        refCast<const solidContactFvPatchVectorField>
+        (
+            D.boundaryField()[slavePatches_[i]]
+        );
+    const rigidSurface* tool = pf.tool();
+    if (!tool || !Pstream::master())
+    {
+        return;
+    }
+
+    // The tool's surface in its current position: a tessellation of an
+    // analytic surface over twice the slave patch's extent (planes and
+    // cylinders are infinite), a triangulated one as read
+    const boundBox bb(pf.patch().patch().localPoints(), true);
+    pointField points;
+    faceList faces;
+    tool->tessellate(bb.centre(), bb.mag(), points, faces);
+    const scalar t = mesh_.time().value();
+    const c4f::rigid::RigidMotion m(tool->motion(t));
+    forAll(points, k)
+    {
+        const Eigen::Vector3d x =
+            m.apply(Eigen::Vector3d(points[k].x(), points[k].y(), points[k].z()));
+        points[k] = point(x(0), x(1), x(2));
+    }
+    const fileName dir(baseFileDir()/name()/mesh_.time().timeName());
+    mkDir(dir);
+    meshedSurface(std::move(points), std::move(faces)).write
+    (
+        dir/(names()[i] + "_tool.vtk")
+    );
+}
+
+
 void Foam::functionObjects::contactReport::writeFileHeader(const label i)
 {
     OFstream& os = files(i);
@@ -176,6 +224,20 @@ void Foam::functionObjects::contactReport::writeFileHeader(const label i)
     )
     {
         writeTabbed(os, col);
+    }
+    if (rigid_[i])
+    {
+        // The tool's translation [m] and the moment of the contact forces
+        // on it about its current centre of rotation [N m]
+        for
+        (
+            const char* col :
+            {"toolX", "toolY", "toolZ", "toolMomentX", "toolMomentY",
+             "toolMomentZ"}
+        )
+        {
+            writeTabbed(os, col);
+        }
     }
     os  << endl;
 }
@@ -253,11 +315,25 @@ bool Foam::functionObjects::contactReport::write()
                 << tab << r.minGap
                 << tab << r.force.x()
                 << tab << r.force.y()
-                << tab << r.force.z()
-                << endl;
+                << tab << r.force.z();
+            if (r.rigid)
+            {
+                os  << tab << r.toolTranslation.x()
+                    << tab << r.toolTranslation.y()
+                    << tab << r.toolTranslation.z()
+                    << tab << r.toolMoment.x()
+                    << tab << r.toolMoment.y()
+                    << tab << r.toolMoment.z();
+            }
+            os  << endl;
         }
 
         writeMultipliers(i);
+
+        if (rigid_[i])
+        {
+            writeTool(i);
+        }
     }
     return true;
 }
