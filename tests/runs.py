@@ -140,3 +140,11 @@ def bimaterial_checks(ck, case, name):
         ref = -nu * T / E
         err = float(np.abs(eyy - ref).max() / abs(ref))
         ck.add("%s/eps_yy_%s" % (name, part), err <= tol, float(eyy.mean()), ref, err, tol)
+
+
+def rigid_sphere(method, surface="sphere"):
+    """rigidSphere -method `method` [-surface triSurface]: a rigid sphere
+    (no mesh) on the block."""
+    name = "rigidSphere_" + method + ("" if surface == "sphere" else "_" + surface)
+    args = ["-method", method] + ([] if surface == "sphere" else ["-surface", surface])
+    return harness.tutorial_run("rigidSphere", name, args)
