@@ -386,16 +386,19 @@ class Checks:
 
 # --------------------------------------------------------------------------
 # Restarts
-def restart_run(finished, end_time=None, suffix="_restart"):
+def restart_run(finished, end_time=None, suffix="_restart", prepare=None):
     """Copy a finished case to finished + suffix and continue it with the
     solver to end_time (default: one more step at the same load, endTime 2
-    of a one-step run), once per session. dict(case, rc, out)."""
+    of a one-step run), once per session; prepare(case), if given, edits
+    the copy first (e.g. removes the last times). dict(case, rc, out)."""
     case = finished + suffix
 
     def make():
         shutil.rmtree(case, ignore_errors=True)
         shutil.copytree(finished, case,
                         ignore=shutil.ignore_patterns("processor*", "VTK", "log.*"))
+        if prepare:
+            prepare(case)
         cd = os.path.join(case, "system/controlDict")
         end = end_time or "2"
         text = re.sub(r"^endTime\s+[^;]+;", "endTime %s;" % end, open(cd).read(), flags=re.M)
