@@ -78,3 +78,33 @@ def test_rigid_sphere_restart_mid_load():
             ck.add("%s/force_t%g_equals_uninterrupted" % (name, t), err <= 1e-6, f, f0,
                    err, 1e-6)
     ck.verify()
+
+
+@pytest.mark.xdist_group("rigidSphere")
+def test_rigid_sphere_force_control():
+    """Allrun -force F with F the displacement-controlled LM run's load at
+    its last step (delta = 1 mm): the position the solver finds for F is
+    that delta to 1e-4 (issue 23; the force is held to 1e-6, and dF/F =
+    1.5 d(delta)/delta, so delta follows to about 1e-6), and a restart
+    of it continues at the written position: one more step at the same
+    load converges without moving the tool."""
+    ck = harness.Checks()
+    name = "rigidSphere_%s_force" % runs.LM
+    ref = harness.need(runs.rigid_sphere(runs.LM), "rigidSphere_" + runs.LM)
+    last = contactreport.rows(ref, "blockTop")[-1]
+    F = -4 * last["forceY"]
+    r = harness.tutorial_run("rigidSphere", name, ["-force", "%.10g" % F])
+    if ck.run(r, name):
+        row = contactreport.rows(r["case"], "blockTop")[-1]
+        delta = -row["toolY"]
+        err = abs(delta - 1e-3) / 1e-3
+        ck.add(name + "/indentation_equals_displacement_control", err <= 1e-4, delta, 1e-3,
+               err, 1e-4)
+        rr = harness.restart_run(r["case"])
+        moved = re.findall(r"force control update", rr["out"])
+        steps = re.findall(r"^Time = (\S+)\s+correctors = (\d+)", rr["out"], flags=re.M)
+        ok = rr["rc"] == 0 and len(steps) == 1 and not moved and int(steps[0][1]) <= 5
+        ck.add(name + "/restart_keeps_position", ok,
+               note="rc=%d, steps %s, %d position updates, see %s"
+               % (rr["rc"], steps, len(moved), rr["case"]))
+    ck.verify()

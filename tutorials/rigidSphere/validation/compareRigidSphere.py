@@ -17,17 +17,24 @@ Data, for every written time t:
     tool's translation table and c its centre in 0/D (for -surface
     triSurface the centre log.writeSphereStl printed), i.e. the table's
     descent less the -gap lift;
-  - F: the normal force of the quarter patch blockTop, contactReport's
-    normalForce, times 4 for the whole sphere (SYMMETRY);
+  - F: the load along the indentation, minus contactReport's forceY of
+    the quarter patch blockTop (the slave is pushed down), times 4 for the
+    whole sphere (SYMMETRY): Hertz's F is the axial load, where
+    normalForce sums each face's force along its own normal (0.2 % more at
+    a/R = 0.1);
   - contactPressure and contactActive of blockTop (face centres and areas
     from constant/polyMesh, the reference configuration), r = sqrt(x^2 +
     z^2).
+
+Under force control (Allrun -force N) delta is the position the solver
+found (contactReport's toolY column) and F the load it held: the same
+checks then compare Hertz's F at that delta with the prescribed load.
 
 Checks (h: the slave face width at the contact, 1 mm at -refine 1; a = 4.5
 to 10 mm over the five steps, 4.5 to 10 faces):
   - force_step<i>: |F - F_Hertz(delta)| / F_Hertz at every step, tolerance
     F_TOL = 2 % (the issue's target). Measured at -refine 1: within
-    0.5 % for lagrangeMultiplier (first step +0.2 %, last -0.4 %), within
+    0.7 % for lagrangeMultiplier (first step +0.1 %, last -0.6 %), within
     1 % for penalty (its penetration, 5e-6 m at the last step, 0.5 % of
     delta, takes 0.8 % off F). What is left is the mesh: on a coarser far
     field (27000 cells) the last step came out 1.9 % low; and the finite
@@ -63,9 +70,13 @@ P0_TOL = 0.04             # fraction of Hertz's peak pressure, the last step
 
 
 def rigid_entry(case):
-    """(centre y, translation table [(t, uy)]) of the rigid sphere."""
+    """(centre y, translation table [(t, uy)]) of the rigid sphere; the
+    table None under force control (Allrun -force)."""
     text = foamio.strip_comments(open(os.path.join(case, "0", "D")).read())
     m = re.search(r"translation\s+table\s*\((.*?)\)\s*\)\s*;", text, flags=re.S)
+    if not m and re.search(r"\bforceControl\b", text):
+        m = re.search(r"\bcentre\s*\(\s*\S+\s+(\S+)\s+\S+\s*\)", text)
+        return (float(m.group(1)) if m else R), None
     if not m:
         sys.exit("compareRigidSphere: no 'translation table (...)' in 0/D")
     table = [(float(t), float(uy)) for t, uy in
@@ -81,7 +92,12 @@ def rigid_entry(case):
 
 
 def indentation(case, t):
+    """The sphere's depth at time t: from its translation table, or under
+    force control the tool's translation contactReport wrote (toolY)."""
     cy, table = rigid_entry(case)
+    if table is None:
+        row = contactreport.row_at(case, SLAVE, t)
+        return R - (cy + row["toolY"]) if row else 0.0
     ts, uy = zip(*table)
     return R - (cy + float(np.interp(t, ts, uy)))
 
@@ -106,7 +122,7 @@ def compare(case):
     for t in times:
         d = indentation(case, float(t))
         row = contactreport.row_at(case, SLAVE, float(t))
-        F = SYMMETRY * row["normalForce"] if row else 0.0
+        F = -SYMMETRY * row["forceY"] if row else 0.0
         FH = 4.0 / 3.0 * Es * math.sqrt(R) * max(d, 0.0) ** 1.5
         r, p, active, area = pressure_at(case, t)
         aNum = math.sqrt(SYMMETRY * float(area[active].sum()) / math.pi)

@@ -431,9 +431,17 @@ void Foam::solidContactFvPatchVectorField::write(Ostream& os) const
     fvPatchVectorField::write(os);
     if (settings_.rigid())
     {
-        os.beginBlock("rigidSurface");
-        settings_.rigidSurfaceDict().write(os, false);
-        os.endBlock();
+        // The tool's own write carries a force-controlled position
+        if (tool())
+        {
+            tool()->write(os);
+        }
+        else
+        {
+            os.beginBlock("rigidSurface");
+            settings_.rigidSurfaceDict().write(os, false);
+            os.endBlock();
+        }
     }
     else
     {

@@ -57,6 +57,10 @@ void Foam::contactCorrector::beginCorrector
     {
         timeIndex_ = timeIndex;
         h.method().beginStep();
+        if (tool_.valid())
+        {
+            tool_->beginStep();
+        }
         multiplierHistory_.clear();
         nCorrectors_ = 0;
         updateTime_ = 0;
@@ -444,6 +448,44 @@ void Foam::contactCorrector::checkPassedThrough(const fvPatch& slave) const
 }
 
 
+bool Foam::contactCorrector::updateToolPosition
+(
+    const fvPatch& slave,
+    const contactHistory& h
+)
+{
+    rigidSurface& tool = tool_();
+    const vector& e = tool.forceDirection();
+    const scalar P =
+        gSum((h.traction()*slave.magSf()) & e);
+    const scalar t = slave.boundaryMesh().mesh().time().value();
+    const scalar s0 = tool.translation(t) & e;
+    const bool moved =
+        tool.updatePosition
+        (
+            P, t, coupling_->directionStiffness(e), pair_->searchDistance()
+        );
+    if (moved)
+    {
+        Info<< "    contact " << slave.name() << ": force control update "
+            << tool.nForceUpdates() << ": P = " << P << " N (prescribed "
+            << tool.targetForce(t) << "), position " << s0 << " -> "
+            << (tool.translation(t) & e) << " m" << endl;
+        if (tool.nForceUpdates() > maxForceUpdates_)
+        {
+            FatalErrorInFunction
+                << "Contact patch " << slave.name() << " at time "
+                << slave.boundaryMesh().mesh().time().timeName()
+                << ": the force-controlled tool's position did not settle"
+                << " in " << maxForceUpdates_ << " updates (P = " << P
+                << " N, prescribed " << tool.targetForce(t) << " N)"
+                << exit(FatalError);
+        }
+    }
+    return moved;
+}
+
+
 bool Foam::contactCorrector::updateMultipliers
 (
     const fvPatch& slave,
@@ -472,12 +514,19 @@ bool Foam::contactCorrector::updateMultipliers
     // The tangential multipliers of an augmenting method are updated with
     // the normal ones, from the same converged state
     lastState_.traction = h.traction();
-    const bool updated =
+    bool updated =
         h.method().updateMultipliers(lastState_, h.cond())
       | h.friction().updateMultipliers
         (
             lastState_, h.cond(), h.method().multiplierTolerance()
         );
+
+    // A force-controlled tool moves once the method's multipliers have
+    // settled (its force is that of a converged state with them)
+    if (!updated && tool_.valid() && tool_->forceControlled())
+    {
+        updated = updateToolPosition(slave, h);
+    }
     if (updated)
     {
         contactReporter(slave, h, this).writeFields();

@@ -451,6 +451,23 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterTransfer
 }
 
 
+Foam::scalar Foam::contactInterfaceCoupling::directionStiffness
+(
+    const vector& e
+) const
+{
+    scalar k = 0;
+    forAll(normal_, i)
+    {
+        for (label s = start_[i]; s < start_[i+1]; ++s)
+        {
+            k += coeff_[s]*sqr(normal_[i] & e);
+        }
+    }
+    return returnReduce(k, sumOp<scalar>());
+}
+
+
 Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::slaveDiag() const
 {
     tmp<vectorField> td(new vectorField(normal_.size(), Zero));

@@ -20,8 +20,45 @@ Foam::rigidSurface::rigidSurface(const dictionary& dict)
     dict_(dict),
     translation_(),
     rotation_(),
-    centreOfRotation_(Zero)
+    centreOfRotation_(Zero),
+    forceDirection_(Zero),
+    force_(),
+    forceTolerance_(1e-6),
+    forceState_(),
+    nForceUpdates_(0)
 {
+    if (dict.found("forceControl"))
+    {
+        if (!dict.isDict("forceControl"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'forceControl' of " << dict.name() << " must be a"
+                << " dictionary (direction, force, tolerance, position)"
+                << exit(FatalIOError);
+        }
+        const dictionary& fc = dict.subDict("forceControl");
+        const vector e = fc.get<vector>("direction");
+        if (!(mag(e) > VSMALL))
+        {
+            FatalIOErrorInFunction(fc)
+                << "Entry 'direction' of " << fc.name() << " is " << e
+                << "; the force-controlled direction must be a non-zero"
+                << " vector (the way the tool pushes into the body)"
+                << exit(FatalIOError);
+        }
+        forceDirection_ = e/mag(e);
+        force_ = Function1<scalar>::New("force", fc);
+        forceTolerance_ = fc.getOrDefault<scalar>("tolerance", 1e-6);
+        if (!(forceTolerance_ > 0 && forceTolerance_ < 1))
+        {
+            FatalIOErrorInFunction(fc)
+                << "Entry 'tolerance' of " << fc.name() << " is "
+                << forceTolerance_ << "; valid: 0 < tolerance < 1 (relative"
+                << " to the prescribed force)" << exit(FatalIOError);
+        }
+        forceState_.s = fc.getOrDefault<scalar>("position", 0);
+    }
+
     const dictionary* motionPtr = dict.findDict("motion");
     if (motionPtr)
     {
@@ -81,7 +118,77 @@ Foam::vector Foam::rigidSurface::readDirection(const word& key) const
 
 Foam::vector Foam::rigidSurface::translation(const scalar t) const
 {
-    return translation_.valid() ? translation_->value(t) : vector::zero;
+    const vector u = translation_.valid() ? translation_->value(t) : Zero;
+    if (!forceControlled())
+    {
+        return u;
+    }
+    const vector& e = forceDirection_;
+    return u - e*(e & u) + e*forceState_.s;
+}
+
+
+Foam::scalar Foam::rigidSurface::targetForce(const scalar t) const
+{
+    return force_.valid() ? force_->value(t) : 0;
+}
+
+
+bool Foam::rigidSurface::updatePosition
+(
+    const scalar P,
+    const scalar t,
+    const scalar k0,
+    const scalar maxStep
+)
+{
+    c4f::rigid::ForceControlState& st = forceState_;
+    const scalar Pt = targetForce(t);
+
+    if (!(P > 0) && nForceUpdates_ == 0 && !st.havePrev)
+    {
+        FatalIOErrorInFunction(dict_.subDict("forceControl"))
+            << "The force-controlled tool of " << dict_.name() << " carries"
+            << " no force at its position " << st.s << " m along "
+            << forceDirection_ << " (P = " << P << " N, prescribed " << Pt
+            << " N): no slave face touches it, so its position cannot"
+            << " follow from the force. Start it touching (forceControl/"
+            << "position, the translation along direction) or bring it into"
+            << " contact under displacement control first"
+            << exit(FatalIOError);
+    }
+
+    // The converged force at the current s (a new step's first state is
+    // at the position the last one ended at: the secant keeps its other
+    // point, P(s) being the same curve)
+    st.P = P;
+
+    if (c4f::rigid::forceControlConverged(P, Pt, forceTolerance_))
+    {
+        return false;
+    }
+
+    const scalar sNew =
+        c4f::rigid::forceControlUpdate(st, Pt, max(k0, VSMALL), maxStep);
+    st.sPrev = st.s;
+    st.PPrev = st.P;
+    st.havePrev = true;
+    st.s = sNew;
+    ++nForceUpdates_;
+    return true;
+}
+
+
+void Foam::rigidSurface::write(Ostream& os) const
+{
+    dictionary d(dict_);
+    if (forceControlled())
+    {
+        d.subDict("forceControl").set("position", forceState_.s);
+    }
+    os.beginBlock("rigidSurface");
+    d.write(os, false);
+    os.endBlock();
 }
 
 
