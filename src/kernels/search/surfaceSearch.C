@@ -438,6 +438,72 @@ SearchHit SurfaceSearch::closest(const Vector& q, const double maxDistance) cons
 }
 
 
+SearchHit SurfaceSearch::firstHit
+(
+    const Vector& origin,
+    const Vector& direction,
+    const double maxDistance
+) const
+{
+    const Impl& impl = built("firstHit");
+    checkQuery(origin, maxDistance, "SurfaceSearch::firstHit");
+    if (!direction.allFinite() || !(direction.norm() > 0))
+    {
+        throw std::invalid_argument
+        (
+            "SurfaceSearch::firstHit: need a finite non-zero direction"
+        );
+    }
+
+    SearchHit hit;
+    if (impl.tree.empty())
+    {
+        return hit;
+    }
+
+    const Kernel::Ray_3 ray
+    (
+        toCgal(origin),
+        Kernel::Vector_3(direction.x(), direction.y(), direction.z())
+    );
+    const auto res = impl.tree.first_intersection(ray);
+    if (!res)
+    {
+        return hit;
+    }
+
+    Vector x;
+    if (const Point* p = boost::get<Point>(&res->first))
+    {
+        x = toEigen(*p);
+    }
+    else if
+    (
+        const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&res->first)
+    )
+    {
+        const Vector a = toEigen(s->source());
+        const Vector b = toEigen(s->target());
+        x = (a - origin).norm() <= (b - origin).norm() ? a : b;
+    }
+    else
+    {
+        return hit;
+    }
+
+    const double d = (x - origin).norm();
+    if (d > maxDistance)
+    {
+        return hit;
+    }
+    hit.found = true;
+    hit.face = impl.triFace[res->second - impl.triangles.cbegin()];
+    hit.point = x;
+    hit.distance = d;
+    return hit;
+}
+
+
 std::vector<int> SurfaceSearch::facesInBox(const Vector& lo, const Vector& hi) const
 {
     const Impl& impl = built("facesInBox");

@@ -58,7 +58,7 @@ void Foam::rigidContactPair::update
     forAll(x, i)
     {
         const c4f::rigid::SurfacePoint sp =
-            surface_.closest(x[i], t, searchDistance_);
+            surface_.closest(x[i], nf[i], t, searchDistance_);
         const bool found = sp.gap < 0.5*GREAT;
         gap_[i] = sp.gap;
         inRange_[i] = found && sp.gap <= searchDistance_;

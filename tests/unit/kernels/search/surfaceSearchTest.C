@@ -611,3 +611,57 @@ TEST(surfaceSearch, badInputThrows)
     expectInvalid([&] { bruteForceClosest(s.points, {{0, 1, 12}}, q, inf); }, "refers to point 12");
     expectInvalid([&] { bruteForceClosest(s.points, s.faces, q, -0.5); }, "maxDistance");
 }
+
+
+// firstHit: the ray finds the face it crosses, not the nearest one. A
+// unit cube's bottom face (y = 0) with a point 0.3 inside it and 0.1 from
+// its side x = 1: the closest point is on the side, the ray down on the
+// bottom at distance 0.3.
+TEST(surfaceSearch, firstHitFindsTheCrossedFace)
+{
+    const std::vector<Eigen::Vector3d> p =
+    {
+        {0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1},
+        {0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}
+    };
+    const std::vector<std::vector<int>> f =
+    {
+        {0, 1, 2, 3}, {4, 7, 6, 5}, {1, 5, 6, 2}, {0, 3, 7, 4},
+        {0, 4, 5, 1}, {3, 2, 6, 7}
+    };
+    c4f::search::SurfaceSearch s;
+    s.build(p, f);
+    const Eigen::Vector3d q(0.9, 0.3, 0.5);
+    const c4f::search::SearchHit c = s.closest(q, 10);
+    ASSERT_TRUE(c.found);
+    EXPECT_EQ(c.face, 2);
+    EXPECT_NEAR(c.distance, 0.1, 1e-14);
+
+    const c4f::search::SearchHit h = s.firstHit(q, Eigen::Vector3d(0, -2, 0), 10);
+    ASSERT_TRUE(h.found);
+    EXPECT_EQ(h.face, 0);
+    EXPECT_NEAR(h.distance, 0.3, 1e-14);
+    EXPECT_NEAR((h.point - Eigen::Vector3d(0.9, 0, 0.5)).norm(), 0, 1e-14);
+
+    // Beyond maxDistance, or away from the surface: nothing
+    EXPECT_FALSE(s.firstHit(q, Eigen::Vector3d(0, -1, 0), 0.2).found);
+    EXPECT_FALSE
+    (
+        s.firstHit(Eigen::Vector3d(3, 3, 3), Eigen::Vector3d(1, 0, 0), 10).found
+    );
+
+    // Along a face's plane: the segment's end nearer the origin
+    const c4f::search::SearchHit e =
+        s.firstHit(Eigen::Vector3d(-1, 0, 0.5), Eigen::Vector3d(1, 0, 0), 10);
+    ASSERT_TRUE(e.found);
+    EXPECT_NEAR(e.distance, 1, 1e-14);
+
+    EXPECT_THROW
+    (
+        s.firstHit(q, Eigen::Vector3d(0, 0, 0), 1), std::invalid_argument
+    );
+    EXPECT_THROW
+    (
+        s.firstHit(q, Eigen::Vector3d(0, -1, 0), -1), std::invalid_argument
+    );
+}

@@ -33,6 +33,7 @@ Foam::rigidSurfaces::cylinder::cylinder
 c4f::rigid::SurfacePoint Foam::rigidSurfaces::cylinder::closestReference
 (
     const Eigen::Vector3d& X,
+    const Eigen::Vector3d&,
     const scalar
 ) const
 {

@@ -30,6 +30,7 @@ Foam::rigidSurfaces::plane::plane
 c4f::rigid::SurfacePoint Foam::rigidSurfaces::plane::closestReference
 (
     const Eigen::Vector3d& X,
+    const Eigen::Vector3d&,
     const scalar
 ) const
 {

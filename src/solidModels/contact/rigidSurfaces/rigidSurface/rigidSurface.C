@@ -205,13 +205,19 @@ c4f::rigid::RigidMotion Foam::rigidSurface::motion(const scalar t) const
 c4f::rigid::SurfacePoint Foam::rigidSurface::closest
 (
     const point& x,
+    const vector& slaveNormal,
     const scalar t,
     const scalar maxDistance
 ) const
 {
     const c4f::rigid::RigidMotion m(motion(t));
     c4f::rigid::SurfacePoint sp =
-        closestReference(m.applyInverse(toEigen(x)), maxDistance);
+        closestReference
+        (
+            m.applyInverse(toEigen(x)),
+            m.rotation().transpose()*toEigen(slaveNormal),
+            maxDistance
+        );
     sp.point = m.apply(sp.point);
     sp.normal = m.rotateVector(sp.normal);
     return sp;

@@ -32,6 +32,7 @@ Foam::rigidSurfaces::sphere::sphere
 c4f::rigid::SurfacePoint Foam::rigidSurfaces::sphere::closestReference
 (
     const Eigen::Vector3d& X,
+    const Eigen::Vector3d&,
     const scalar
 ) const
 {

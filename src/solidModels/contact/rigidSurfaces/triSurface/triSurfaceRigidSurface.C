@@ -89,6 +89,7 @@ Foam::rigidSurfaces::triSurface::triSurface
 c4f::rigid::SurfacePoint Foam::rigidSurfaces::triSurface::closestReference
 (
     const Eigen::Vector3d& X,
+    const Eigen::Vector3d& slaveNormal,
     const scalar maxDistance
 ) const
 {
@@ -110,6 +111,26 @@ c4f::rigid::SurfacePoint Foam::rigidSurfaces::triSurface::closestReference
     sp.gap = s*dist;
     sp.normal = dist > 1e-9*size_ ? Eigen::Vector3d(s*d/dist) : nT;
     sp.valid = true;
+
+    // Inside the tool, closest to a face that does not face the body (the
+    // side of a flat punch, for a point that crossed the bottom near the
+    // edge by more than its distance to the side): the face it crossed
+    // lies back along the body's normal. Without this a step that pushes
+    // a flat punch deeper than the faces next to its edge are from its
+    // side pushed those faces sideways onto the side (Sneddon's punch
+    // carried 15 % too much normal force, 34 % on the mesh twice finer)
+    if (sp.gap < 0 && nT.dot(slaveNormal) > -facingCos_)
+    {
+        const c4f::search::SearchHit ray =
+            search_.firstHit(X, -slaveNormal, maxDistance);
+        if (ray.found && normals_[ray.face].dot(slaveNormal) <= -facingCos_)
+        {
+            const Eigen::Vector3d& nR = normals_[ray.face];
+            sp.point = ray.point;
+            sp.normal = nR;
+            sp.gap = (X - ray.point).dot(nR);
+        }
+    }
     return sp;
 }
 
