@@ -142,9 +142,17 @@ def bimaterial_checks(ck, case, name):
         ck.add("%s/eps_yy_%s" % (name, part), err <= tol, float(eyy.mean()), ref, err, tol)
 
 
-def rigid_sphere(method, surface="sphere"):
-    """rigidSphere -method `method` [-surface triSurface]: a rigid sphere
-    (no mesh) on the block."""
-    name = "rigidSphere_" + method + ("" if surface == "sphere" else "_" + surface)
-    args = ["-method", method] + ([] if surface == "sphere" else ["-surface", surface])
+def rigid_sphere(method, surface="sphere", parallel=False):
+    """rigidSphere -method `method` [-surface triSurface] [-parallel]: a
+    rigid sphere (no mesh) on the block."""
+    name = "rigidSphere_" + method + ("" if surface == "sphere" else "_" + surface) \
+        + ("_parallel" if parallel else "")
+    args = ["-method", method] + ([] if surface == "sphere" else ["-surface", surface]) \
+        + (["-parallel"] if parallel else [])
     return harness.tutorial_run("rigidSphere", name, args)
+
+
+def rigid_punch(method):
+    """rigidPunch -method `method`: Sneddon's rigid flat punch (an STL, no
+    mesh) on the block."""
+    return harness.tutorial_run("rigidPunch", "rigidPunch_" + method, ["-method", method])

@@ -108,3 +108,26 @@ def test_rigid_sphere_force_control():
                note="rc=%d, steps %s, %d position updates, see %s"
                % (rr["rc"], steps, len(moved), rr["case"]))
     ck.verify()
+
+
+@pytest.mark.xdist_group("rigidSphere")
+def test_rigid_sphere_parallel_equals_serial():
+    """Allrun -parallel (2 processors, scotch's cut through the contact):
+    every processor projects its own faces on the whole tool, so F of
+    every step is the serial run's to 1e-6 (the outer tolerance's order;
+    issue 23). The run also used to hang at its first write: the tool's
+    output box was reduced on the master alone."""
+    ck = harness.Checks()
+    name = "rigidSphere_%s_parallel" % runs.LM
+    ref = harness.need(runs.rigid_sphere(runs.LM), "rigidSphere_" + runs.LM)
+    r = runs.rigid_sphere(runs.LM, parallel=True)
+    if ck.run(r, name):
+        rows = {x["time"]: x for x in contactreport.rows(r["case"], "blockTop")}
+        refs = {x["time"]: x for x in contactreport.rows(ref, "blockTop")}
+        ck.add(name + "/same_steps", sorted(rows) == sorted(refs),
+               note="(%d and %d steps)" % (len(rows), len(refs)))
+        for t in sorted(set(rows) & set(refs)):
+            f, f0 = rows[t]["normalForce"], refs[t]["normalForce"]
+            err = abs(f - f0) / abs(f0)
+            ck.add("%s/force_t%g_equals_serial" % (name, t), err <= 1e-6, f, f0, err, 1e-6)
+    ck.verify()

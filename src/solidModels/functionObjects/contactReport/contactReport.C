@@ -173,15 +173,20 @@ void Foam::functionObjects::contactReport::writeTool(const label i) const
             D.boundaryField()[slavePatches_[i]]
         );
     const rigidSurface* tool = pf.tool();
-    if (!tool || !Pstream::master())
+    if (!tool)
     {
         return;
     }
 
     // The tool's surface in its current position: a tessellation of an
     // analytic surface over twice the slave patch's extent (planes and
-    // cylinders are infinite), a triangulated one as read
+    // cylinders are infinite), a triangulated one as read. The box is
+    // reduced over the processors, so every one of them gets here
     const boundBox bb(pf.patch().patch().localPoints(), true);
+    if (!Pstream::master())
+    {
+        return;
+    }
     pointField points;
     faceList faces;
     tool->tessellate(bb.centre(), bb.mag(), points, faces);
