@@ -56,13 +56,8 @@ void Foam::rigidSurfaces::cylinder::tessellate
     const label n = 96;
     const scalar pi = constant::mathematical::pi;
     const point c = point_ + axis_*((centre - point_) & axis_);
-    vector t1 = axis_ ^ vector(1, 0, 0);
-    if (mag(t1) < 0.5)
-    {
-        t1 = axis_ ^ vector(0, 1, 0);
-    }
-    t1 /= mag(t1);
-    const vector t2 = axis_ ^ t1;
+    vector t1, t2;
+    tangentBasis(axis_, t1, t2);
     points.setSize(2*n);
     for (label j = 0; j < n; ++j)
     {

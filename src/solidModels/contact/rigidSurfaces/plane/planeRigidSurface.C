@@ -48,13 +48,8 @@ void Foam::rigidSurfaces::plane::tessellate
 {
     // A square of half size extent about the centre's foot on the plane
     const vector c = centre - normal_*((centre - point_) & normal_);
-    vector t1 = normal_ ^ vector(1, 0, 0);
-    if (mag(t1) < 0.5)
-    {
-        t1 = normal_ ^ vector(0, 1, 0);
-    }
-    t1 /= mag(t1);
-    const vector t2 = normal_ ^ t1;
+    vector t1, t2;
+    tangentBasis(normal_, t1, t2);
     points.setSize(4);
     points[0] = c - extent*t1 - extent*t2;
     points[1] = c + extent*t1 - extent*t2;

@@ -114,6 +114,24 @@ Foam::vector Foam::rigidSurface::readDirection(const word& key) const
 }
 
 
+void Foam::rigidSurface::tangentBasis
+(
+    const vector& n,
+    vector& t1,
+    vector& t2
+)
+{
+    // Against the axis least aligned with n, so that t1 is never short
+    t1 = n ^ vector(1, 0, 0);
+    if (mag(t1) < 0.5)
+    {
+        t1 = n ^ vector(0, 1, 0);
+    }
+    t1 /= mag(t1);
+    t2 = n ^ t1;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::vector Foam::rigidSurface::translation(const scalar t) const
