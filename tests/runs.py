@@ -156,3 +156,10 @@ def rigid_punch(method):
     """rigidPunch -method `method`: Sneddon's rigid flat punch (an STL, no
     mesh) on the block."""
     return harness.tutorial_run("rigidPunch", "rigidPunch_" + method, ["-method", method])
+
+
+def hertz_sphere_variant(sphere):
+    """hertzSphere -sphere stiff|rigid (LM): the sphere 1000 times stiffer
+    than the block, or a rigid sphere (a rigidSurface) in its place."""
+    return harness.tutorial_run("hertzSphere", "hertzSphere_%s_%s" % (LM, sphere),
+                                ["-method", LM, "-sphere", sphere])

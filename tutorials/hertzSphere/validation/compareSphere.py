@@ -5,8 +5,14 @@ The checks, their tolerances and where the tolerances come from live here,
 once: the tutorial prints them, the regression tests (tests/, pytest) reads
 them with --json.
 
+Allrun -sphere stiff (a zoned law, the sphere 1000 times stiffer): E* of
+the two bodies' laws (Johnson 1985, eq. 4.22), the block's to 0.1 %;
+-sphere rigid: the slave is the block's top blockContact against a rigid
+sphere (rigidSurface), E* = E/(1 - nu^2) of the block.
+
 Data (latest time or --time, reference configuration): contactPressure and
-contactActive on the slave patch sphereContact (positive in compression),
+contactActive on the slave patch sphereContact (blockContact against a
+rigid sphere) (positive in compression),
 its face centres and area vectors from constant/polyMesh
 (c4fpost.foamio.patch_geometry). r = sqrt(x^2 + z^2) is the distance from
 the axis through the first point of contact.
@@ -54,6 +60,7 @@ mesh, a ~ 10 h):
 import json
 import math
 import os
+import re
 import sys
 
 from c4fpost import contactreport, foamio, hertz, report
@@ -61,7 +68,7 @@ from c4fpost import contactreport, foamio, hertz, report
 import numpy as np
 
 R = 1.0                   # sphere radius [m], system/blockMeshDict
-SLAVE = "sphereContact"
+SLAVE = "sphereContact"   # blockContact against a rigid sphere (slave())
 SYMMETRY = 4.0            # the quarter model
 P0_TOL = 0.04             # fraction of the Hertz peak pressure
 A_TOL_FACES = 1.0         # slave face widths at r = a
@@ -69,11 +76,26 @@ RMS_TOL = 0.025           # fraction of p0, faces with r < RMS_SPAN a
 RMS_SPAN = 0.8
 
 
+def rigid(case):
+    """Whether the block's top is the slave of a rigid sphere (-sphere
+    rigid)."""
+    text = foamio.strip_comments(open(os.path.join(case, "0", "D")).read())
+    return re.search(r"\bblockContact\s*\{[^{}]*\brigidSurface\b", text) is not None
+
+
 def compare(case, time=None):
     """The comparison at `time` (a directory name; default the latest)."""
+    global SLAVE
     time = time or foamio.latest_time(case)
-    (b1, b2), materials = foamio.body_constants(case)
-    Es = hertz.contact_modulus(*b1, *b2)
+    if rigid(case):
+        SLAVE = "blockContact"
+        (_, b2), materials = foamio.body_constants(case, ("sphere", "block"))
+        E, nu = b2
+        Es = E / (1.0 - nu * nu)
+        materials += " (the block's against a rigid sphere)"
+    else:
+        (b1, b2), materials = foamio.body_constants(case, ("sphere", "block"))
+        Es = hertz.contact_modulus(*b1, *b2)
 
     Cf, Sf = foamio.patch_geometry(case, SLAVE)
     n = Cf.shape[0]
