@@ -266,6 +266,22 @@ void Foam::contactCorrector::correct
     const bool firstUpdate = !pair_.valid();
     if (firstUpdate)
     {
+        // A method that needs the bodies apart (the barrier) cannot follow
+        // a rigid tool in prescribed motion: the tool takes its whole step
+        // at the step's start, so every step's first iterate penetrates it
+        // by the step's increment, where the barrier is not defined
+        if (settings.rigid() && h.method().traits().openStart)
+        {
+            FatalIOErrorInFunction(settings.dict())
+                << "Method " << h.method().methodName() << " of "
+                << settings.dict().name() << " needs the bodies apart at"
+                << " every iterate (openStart yes in solidContactFoam"
+                << " -listMethods), but a rigid tool (rigidSurface) moves"
+                << " its whole load step at the step's start, so the first"
+                << " iterate of each step penetrates it by the step's"
+                << " increment. Choose a method with openStart no for a"
+                << " rigid tool" << exit(FatalIOError);
+        }
         build(patch, master ? &master->patch() : nullptr, settings);
     }
 
