@@ -152,10 +152,12 @@ def rigid_sphere(method, surface="sphere", parallel=False):
     return harness.tutorial_run("rigidSphere", name, args)
 
 
-def rigid_punch(method):
-    """rigidPunch -method `method`: Sneddon's rigid flat punch (an STL, no
-    mesh) on the block."""
-    return harness.tutorial_run("rigidPunch", "rigidPunch_" + method, ["-method", method])
+def rigid_punch(method, parallel=False):
+    """rigidPunch -method `method` [-parallel]: Sneddon's rigid flat punch
+    (an STL, no mesh) on the block."""
+    return harness.tutorial_run("rigidPunch",
+                                "rigidPunch_" + method + ("_parallel" if parallel else ""),
+                                ["-method", method] + (["-parallel"] if parallel else []))
 
 
 def hertz_sphere_variant(sphere):

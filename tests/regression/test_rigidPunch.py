@@ -9,6 +9,7 @@ import pytest
 
 import harness
 import runs
+from c4fpost import contactreport
 
 
 @pytest.mark.xdist_group("rigidPunch")
@@ -16,4 +17,26 @@ def test_rigid_punch_sneddon():
     ck = harness.Checks()
     r = runs.rigid_punch(runs.LM)
     ck.run(r, "rigidPunch_" + runs.LM)
+    ck.verify()
+
+
+@pytest.mark.xdist_group("rigidPunch")
+def test_rigid_punch_parallel_equals_serial():
+    """Allrun -parallel: each processor reads the STL from the case's
+    constant/triSurface (processorN/constant has none) and projects its own
+    faces; F of both steps equal to the serial run's to 1e-6 (measured
+    7e-11)."""
+    ck = harness.Checks()
+    name = "rigidPunch_%s_parallel" % runs.LM
+    ref = harness.need(runs.rigid_punch(runs.LM), "rigidPunch_" + runs.LM)
+    r = runs.rigid_punch(runs.LM, parallel=True)
+    if ck.run(r, name):
+        rows = {x["time"]: x for x in contactreport.rows(r["case"], "blockTop")}
+        refs = {x["time"]: x for x in contactreport.rows(ref, "blockTop")}
+        ck.add(name + "/same_steps", sorted(rows) == sorted(refs),
+               note="(%d and %d steps)" % (len(rows), len(refs)))
+        for t in sorted(set(rows) & set(refs)):
+            f, f0 = rows[t]["normalForce"], refs[t]["normalForce"]
+            err = abs(f - f0) / abs(f0)
+            ck.add("%s/force_t%g_equals_serial" % (name, t), err <= 1e-6, f, f0, err, 1e-6)
     ck.verify()

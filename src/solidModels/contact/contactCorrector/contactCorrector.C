@@ -479,7 +479,9 @@ bool Foam::contactCorrector::updateToolPosition
     const bool moved =
         tool.updatePosition
         (
-            P, t, coupling_->directionStiffness(e), pair_->searchDistance()
+            P, t, coupling_->directionStiffness(e),
+            // Within the search's reach of where the faces are now
+            0.5*pair_->searchDistance()
         );
     if (moved)
     {
@@ -539,7 +541,13 @@ bool Foam::contactCorrector::updateMultipliers
 
     // A force-controlled tool moves once the method's multipliers have
     // settled (its force is that of a converged state with them)
-    if (!updated && tool_.valid() && tool_->forceControlled())
+    if
+    (
+        !updated
+     && h.multipliersConverged()
+     && tool_.valid()
+     && tool_->forceControlled()
+    )
     {
         updated = updateToolPosition(slave, h);
     }

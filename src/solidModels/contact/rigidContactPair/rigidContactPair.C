@@ -6,6 +6,8 @@
 #include "solidPatchTractions.H"
 #include "fvMesh.H"
 
+#include <stdexcept>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rigidContactPair::rigidContactPair
@@ -57,8 +59,21 @@ void Foam::rigidContactPair::update
 
     forAll(x, i)
     {
-        const c4f::rigid::SurfacePoint sp =
-            surface_.closest(x[i], nf[i], t, searchDistance_);
+        c4f::rigid::SurfacePoint sp;
+        try
+        {
+            sp = surface_.closest(x[i], nf[i], t, searchDistance_);
+        }
+        catch (const std::exception& e)
+        {
+            // A non-finite face position (a diverged solve) or motion
+            FatalErrorInFunction
+                << "Contact patch " << slave_.name() << " at time "
+                << slave_.boundaryMesh().mesh().time().timeName()
+                << ": the search on the " << masterName() << " failed at"
+                << " face " << i << " (centre " << x[i] << "): "
+                << e.what() << exit(FatalError);
+        }
         const bool found = sp.gap < 0.5*GREAT;
         gap_[i] = sp.gap;
         inRange_[i] = found && sp.gap <= searchDistance_;

@@ -4,6 +4,8 @@
 
 #include "rigidSurface.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -38,7 +40,7 @@ Foam::rigidSurface::rigidSurface(const dictionary& dict)
         }
         const dictionary& fc = dict.subDict("forceControl");
         const vector e = fc.get<vector>("direction");
-        if (!(mag(e) > VSMALL))
+        if (!(mag(e) > VSMALL) || !std::isfinite(mag(e)))
         {
             FatalIOErrorInFunction(fc)
                 << "Entry 'direction' of " << fc.name() << " is " << e
@@ -57,6 +59,14 @@ Foam::rigidSurface::rigidSurface(const dictionary& dict)
                 << " to the prescribed force)" << exit(FatalIOError);
         }
         forceState_.s = fc.getOrDefault<scalar>("position", 0);
+        // The secant's other point, written with each time, so that a
+        // restart moves as the run it continues would
+        if (fc.found("previousPosition") && fc.found("previousForce"))
+        {
+            forceState_.sPrev = fc.get<scalar>("previousPosition");
+            forceState_.PPrev = fc.get<scalar>("previousForce");
+            forceState_.havePrev = true;
+        }
     }
 
     const dictionary* motionPtr = dict.findDict("motion");
@@ -103,12 +113,12 @@ Foam::scalar Foam::rigidSurface::readPositive(const word& key) const
 Foam::vector Foam::rigidSurface::readDirection(const word& key) const
 {
     const vector v = dict_.get<vector>(key);
-    if (!(mag(v) > VSMALL))
+    if (!(mag(v) > VSMALL) || !std::isfinite(mag(v)))
     {
         FatalIOErrorInFunction(dict_)
             << "Entry '" << key << "' of " << dict_.name() << " is " << v
-            << "; a " << dict_.get<word>("type") << " needs a non-zero "
-            << key << " vector" << exit(FatalIOError);
+            << "; a " << dict_.get<word>("type") << " needs a non-zero,"
+            << " finite " << key << " vector" << exit(FatalIOError);
     }
     return v/mag(v);
 }
@@ -163,16 +173,18 @@ bool Foam::rigidSurface::updatePosition
     c4f::rigid::ForceControlState& st = forceState_;
     const scalar Pt = targetForce(t);
 
-    if (!(P > 0) && nForceUpdates_ == 0 && !st.havePrev)
+    // Nothing to move by: no contact at the first state of the run, where
+    // a load is asked for (a restart's first state has its secant)
+    if (!(P > 0) && Pt > 0 && nForceUpdates_ == 0 && !st.havePrev)
     {
         FatalIOErrorInFunction(dict_.subDict("forceControl"))
             << "The force-controlled tool of " << dict_.name() << " carries"
             << " no force at its position " << st.s << " m along "
             << forceDirection_ << " (P = " << P << " N, prescribed " << Pt
             << " N): no slave face touches it, so its position cannot"
-            << " follow from the force. Start it touching (forceControl/"
-            << "position, the translation along direction) or bring it into"
-            << " contact under displacement control first"
+            << " follow from the force. Start it pressed into the body"
+            << " (forceControl/position, its translation along direction:"
+            << " touching is not enough, P must be > 0)"
             << exit(FatalIOError);
     }
 
@@ -202,11 +214,22 @@ void Foam::rigidSurface::write(Ostream& os) const
     dictionary d(dict_);
     if (forceControlled())
     {
-        d.subDict("forceControl").set("position", forceState_.s);
+        dictionary& fc = d.subDict("forceControl");
+        fc.set("position", forceState_.s);
+        if (forceState_.havePrev)
+        {
+            fc.set("previousPosition", forceState_.sPrev);
+            fc.set("previousForce", forceState_.PPrev);
+        }
     }
+    // Full precision: the position's rounding must not cost a restart
+    // moves (a relative 5e-6 at the default 6 digits, above the force's
+    // tolerance)
+    const label prec = os.precision(17);
     os.beginBlock("rigidSurface");
     d.write(os, false);
     os.endBlock();
+    os.precision(prec);
 }
 
 

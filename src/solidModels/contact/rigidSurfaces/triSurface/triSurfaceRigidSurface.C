@@ -32,11 +32,12 @@ Foam::rigidSurfaces::triSurface::triSurface
     search_()
 {
     const fileName file(dict.get<fileName>("file"));
-    const fileName path
+    // The case's own constant/triSurface, also in a decomposed run
+    // (processorN/constant has no triSurface: decomposePar does not copy it)
+    const fileName full
     (
-        db.time().constant()/"triSurface"/file
+        db.time().globalPath()/db.time().constant()/"triSurface"/file
     );
-    const fileName full(db.time().path()/path);
     if (!isFile(full))
     {
         FatalIOErrorInFunction(dict)
