@@ -80,14 +80,10 @@ void Foam::rigidContactPair::update
         hitFace_[i] = inRange_[i] ? i : -1;
         if (found)
         {
-            normal_[i] = vector(sp.normal(0), sp.normal(1), sp.normal(2));
-            footPoint_[i] = vector(sp.point(0), sp.point(1), sp.point(2));
-            const Eigen::Vector3d X = m.applyInverse(sp.point);
+            normal_[i] = c4fConvert::toFoam(sp.normal);
+            footPoint_[i] = c4fConvert::toFoam(sp.point);
             toolD_[i] =
-                vector
-                (
-                    sp.point(0) - X(0), sp.point(1) - X(1), sp.point(2) - X(2)
-                );
+                c4fConvert::toFoam(sp.point - m.applyInverse(sp.point));
         }
         else
         {

@@ -194,9 +194,8 @@ void Foam::functionObjects::contactReport::writeTool(const label i) const
     const c4f::rigid::RigidMotion m(tool->motion(t));
     forAll(points, k)
     {
-        const Eigen::Vector3d x =
-            m.apply(Eigen::Vector3d(points[k].x(), points[k].y(), points[k].z()));
-        points[k] = point(x(0), x(1), x(2));
+        points[k] =
+            c4fConvert::toFoam(m.apply(c4fConvert::toEigen(points[k])));
     }
     const fileName dir(baseFileDir()/name()/mesh_.time().timeName());
     mkDir(dir);

@@ -39,7 +39,7 @@ c4f::rigid::SurfacePoint Foam::rigidSurfaces::cylinder::closestReference
 {
     return c4f::rigid::closestOnCylinder
     (
-        X, toEigen(point_), toEigen(axis_), radius_, inside_
+        X, c4fConvert::toEigen(point_), c4fConvert::toEigen(axis_), radius_, inside_
     );
 }
 

@@ -34,7 +34,7 @@ c4f::rigid::SurfacePoint Foam::rigidSurfaces::plane::closestReference
     const scalar
 ) const
 {
-    return c4f::rigid::closestOnPlane(X, toEigen(point_), toEigen(normal_));
+    return c4f::rigid::closestOnPlane(X, c4fConvert::toEigen(point_), c4fConvert::toEigen(normal_));
 }
 
 

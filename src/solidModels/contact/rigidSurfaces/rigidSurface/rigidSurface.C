@@ -238,7 +238,7 @@ c4f::rigid::RigidMotion Foam::rigidSurface::motion(const scalar t) const
     const vector theta = rotation_.valid() ? rotation_->value(t) : Zero;
     return c4f::rigid::RigidMotion
     (
-        toEigen(translation(t)), toEigen(theta), toEigen(centreOfRotation_)
+        c4fConvert::toEigen(translation(t)), c4fConvert::toEigen(theta), c4fConvert::toEigen(centreOfRotation_)
     );
 }
 
@@ -255,8 +255,8 @@ c4f::rigid::SurfacePoint Foam::rigidSurface::closest
     c4f::rigid::SurfacePoint sp =
         closestReference
         (
-            m.applyInverse(toEigen(x)),
-            m.rotation().transpose()*toEigen(slaveNormal),
+            m.applyInverse(c4fConvert::toEigen(x)),
+            m.rotation().transpose()*c4fConvert::toEigen(slaveNormal),
             maxDistance
         );
     sp.point = m.apply(sp.point);

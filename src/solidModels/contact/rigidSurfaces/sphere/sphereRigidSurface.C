@@ -37,7 +37,7 @@ c4f::rigid::SurfacePoint Foam::rigidSurfaces::sphere::closestReference
 ) const
 {
     return
-        c4f::rigid::closestOnSphere(X, toEigen(centre_), radius_, inside_);
+        c4f::rigid::closestOnSphere(X, c4fConvert::toEigen(centre_), radius_, inside_);
 }
 
 

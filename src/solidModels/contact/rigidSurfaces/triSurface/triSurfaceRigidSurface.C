@@ -65,7 +65,7 @@ Foam::rigidSurfaces::triSurface::triSurface
     std::vector<Eigen::Vector3d> pts(points_.size());
     forAll(points_, i)
     {
-        pts[i] = toEigen(points_[i]);
+        pts[i] = c4fConvert::toEigen(points_[i]);
     }
     std::vector<std::vector<int>> tris(surf.size());
     normals_.resize(surf.size());
