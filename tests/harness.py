@@ -188,6 +188,20 @@ def need(r, what=None):
     return r["case"]
 
 
+def forces_agree(ck, case, ref, patch, name, tol, what):
+    """Check that two runs of the same steps report the same normal force
+    of `patch` at every time, to `tol` relative (checks
+    <name>/same_steps and <name>/force_t<t>_<what>)."""
+    rows = {x["time"]: x for x in contactreport.rows(case, patch)}
+    refs = {x["time"]: x for x in contactreport.rows(ref, patch)}
+    ck.add(name + "/same_steps", sorted(rows) == sorted(refs),
+           note="(%d and %d steps)" % (len(rows), len(refs)))
+    for t in sorted(set(rows) & set(refs)):
+        f, f0 = rows[t]["normalForce"], refs[t]["normalForce"]
+        err = abs(f - f0) / abs(f0)
+        ck.add("%s/force_t%g_%s" % (name, t, what), err <= tol, f, f0, err, tol)
+
+
 # --------------------------------------------------------------------------
 class Checks:
     """The checks of one test: add() each, verify() at the end."""

@@ -9,7 +9,6 @@ import pytest
 
 import harness
 import runs
-from c4fpost import contactreport
 
 
 @pytest.mark.xdist_group("rigidPunch")
@@ -31,12 +30,5 @@ def test_rigid_punch_parallel_equals_serial():
     ref = harness.need(runs.rigid_punch(runs.LM), "rigidPunch_" + runs.LM)
     r = runs.rigid_punch(runs.LM, parallel=True)
     if ck.run(r, name):
-        rows = {x["time"]: x for x in contactreport.rows(r["case"], "blockTop")}
-        refs = {x["time"]: x for x in contactreport.rows(ref, "blockTop")}
-        ck.add(name + "/same_steps", sorted(rows) == sorted(refs),
-               note="(%d and %d steps)" % (len(rows), len(refs)))
-        for t in sorted(set(rows) & set(refs)):
-            f, f0 = rows[t]["normalForce"], refs[t]["normalForce"]
-            err = abs(f - f0) / abs(f0)
-            ck.add("%s/force_t%g_equals_serial" % (name, t), err <= 1e-6, f, f0, err, 1e-6)
+        harness.forces_agree(ck, r["case"], ref, "blockTop", name, 1e-6, "equals_serial")
     ck.verify()

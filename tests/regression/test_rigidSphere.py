@@ -36,15 +36,7 @@ def test_rigid_sphere_trisurface_equals_analytic():
     r = runs.rigid_sphere(runs.LM, "triSurface")
     if ck.run(r, name):
         ref = harness.need(runs.rigid_sphere(runs.LM), "rigidSphere_" + runs.LM)
-        rows = {x["time"]: x for x in contactreport.rows(r["case"], "blockTop")}
-        refs = {x["time"]: x for x in contactreport.rows(ref, "blockTop")}
-        ck.add(name + "/same_steps", sorted(rows) == sorted(refs),
-               note="(%d and %d steps)" % (len(rows), len(refs)))
-        for t in sorted(set(rows) & set(refs)):
-            f, f0 = rows[t]["normalForce"], refs[t]["normalForce"]
-            err = abs(f - f0) / abs(f0)
-            ck.add("%s/force_t%g_equals_analytic" % (name, t), err <= TRI_TOL, f, f0, err,
-                   TRI_TOL)
+        harness.forces_agree(ck, r["case"], ref, "blockTop", name, TRI_TOL, "equals_analytic")
     ck.verify()
 
 
@@ -122,14 +114,7 @@ def test_rigid_sphere_parallel_equals_serial():
     ref = harness.need(runs.rigid_sphere(runs.LM), "rigidSphere_" + runs.LM)
     r = runs.rigid_sphere(runs.LM, parallel=True)
     if ck.run(r, name):
-        rows = {x["time"]: x for x in contactreport.rows(r["case"], "blockTop")}
-        refs = {x["time"]: x for x in contactreport.rows(ref, "blockTop")}
-        ck.add(name + "/same_steps", sorted(rows) == sorted(refs),
-               note="(%d and %d steps)" % (len(rows), len(refs)))
-        for t in sorted(set(rows) & set(refs)):
-            f, f0 = rows[t]["normalForce"], refs[t]["normalForce"]
-            err = abs(f - f0) / abs(f0)
-            ck.add("%s/force_t%g_equals_serial" % (name, t), err <= 1e-6, f, f0, err, 1e-6)
+        harness.forces_agree(ck, r["case"], ref, "blockTop", name, 1e-6, "equals_serial")
     ck.verify()
 
 
