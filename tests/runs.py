@@ -165,3 +165,12 @@ def hertz_sphere_variant(sphere):
     than the block, or a rigid sphere (a rigidSurface) in its place."""
     return harness.tutorial_run("hertzSphere", "hertzSphere_%s_%s" % (LM, sphere),
                                 ["-method", LM, "-sphere", sphere])
+
+
+def self_contact_strip(method, parallel=False):
+    """selfContactStrip -method `method` [-parallel]: the C-shaped strip
+    closing its slot, one patch its own master."""
+    return harness.tutorial_run("selfContactStrip",
+                                "selfContactStrip_" + method
+                                + ("_parallel" if parallel else ""),
+                                ["-method", method] + (["-parallel"] if parallel else []))

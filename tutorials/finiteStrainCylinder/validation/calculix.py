@@ -31,12 +31,12 @@ Usage:
 """
 import argparse
 import os
-import re
 import shutil
 import subprocess
 import sys
 
-import numpy as np
+from c4fpost.calculix import (counter_clockwise, element_faces_on,
+                              read_inp, read_totals)
 
 R = 0.1
 W = 0.2
@@ -89,75 +89,6 @@ Physical Curve("BTOP") = {{11, 16}};
 Physical Curve("BSYM") = {{14}};
 Physical Curve("BOT") = {{13}};
 """
-
-
-def read_inp(path):
-    """Nodes {id: (x, y)}, elements by ELSET {name: [(id, [nodes])]},
-    node sets {name: [ids]} of gmsh's .inp."""
-    nodes, elsets, nsets = {}, {}, {}
-    mode, name = None, None
-    with open(path) as f:
-        for line in f:
-            s = line.strip()
-            if not s or s.startswith("**"):
-                continue
-            if s.startswith("*"):
-                head = s.upper()
-                if head.startswith("*NODE") and "NSET" not in head.split(",")[0][5:]:
-                    mode = "node"
-                elif head.startswith("*ELEMENT"):
-                    m = re.search(r"ELSET=([^,\s]+)", s, re.I)
-                    name = m.group(1) if m else None
-                    mode = "elem" if name else None
-                    if name:
-                        elsets.setdefault(name, [])
-                elif head.startswith("*NSET"):
-                    m = re.search(r"NSET=([^,\s]+)", s, re.I)
-                    name = m.group(1)
-                    nsets.setdefault(name, [])
-                    mode = "nset"
-                else:
-                    mode = None
-                continue
-            vals = [v for v in s.split(",") if v.strip()]
-            if mode == "node":
-                nodes[int(vals[0])] = (float(vals[1]), float(vals[2]))
-            elif mode == "elem":
-                ids = [int(v) for v in vals]
-                if elsets[name] and len(elsets[name][-1][1]) < 8:
-                    elsets[name][-1][1].extend(ids)
-                else:
-                    elsets[name].append((ids[0], ids[1:]))
-            elif mode == "nset":
-                nsets[name].extend(int(v) for v in vals)
-    return nodes, elsets, nsets
-
-
-def counter_clockwise(conn, nodes):
-    """The 8-node quad's connectivity, reversed if it runs clockwise."""
-    if len(conn) != 8:
-        return conn
-    p = np.array([nodes[n] for n in conn[:4]])
-    area = 0.5*sum(p[k, 0]*p[(k + 1) % 4, 1] - p[(k + 1) % 4, 0]*p[k, 1]
-                   for k in range(4))
-    if area > 0:
-        return conn
-    c, m = conn[:4], conn[4:]
-    return [c[0], c[3], c[2], c[1], m[3], m[2], m[1], m[0]]
-
-
-def element_faces_on(elements, nodeset):
-    """(element, face) of the 8-node quads whose edge has both corners in
-    nodeset; faces 1-4 are the edges 1-2, 2-3, 3-4, 4-1 (CalculiX's
-    numbering for plane elements)."""
-    faces = []
-    inset = set(nodeset)
-    for eid, conn in elements:
-        c = conn[:4]
-        for k in range(4):
-            if c[k] in inset and c[(k + 1) % 4] in inset:
-                faces.append((eid, k + 1))
-    return faces
 
 
 def write_model(work, law, size):
@@ -223,22 +154,6 @@ def write_model(work, law, size):
     return len(elsets["CYL"]) + len(elsets["BLK"]), len(master)
 
 
-def read_forces(dat):
-    """(time, total F_y) of every increment in ccx's .dat."""
-    out = []
-    lines = open(dat).read().splitlines()
-    for i, line in enumerate(lines):
-        m = re.search(r"total force \(fx,fy,fz\) for set TOP and time\s+(\S+)", line)
-        if m:
-            t = float(m.group(1))
-            for j in range(i + 1, min(i + 4, len(lines))):
-                v = lines[j].split()
-                if len(v) == 3:
-                    out.append((t, float(v[1])))
-                    break
-    return out
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--law", default="stVenantKirchhoff",
@@ -260,7 +175,7 @@ def main():
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        universal_newlines=True)
     open(os.path.join(work, "log.ccx"), "w").write(r.stdout)
-    forces = read_forces(os.path.join(work, "model.dat"))
+    forces = read_totals(os.path.join(work, "model.dat"), "TOP")
     if r.returncode != 0 or "Job finished" not in r.stdout or not forces \
             or abs(forces[-1][0] - 1) > 1e-9:
         sys.exit("calculix.py: ccx did not finish the step; see %s/log.ccx" % work)

@@ -12,6 +12,11 @@
 const Foam::solidContactFvPatchVectorField&
 Foam::solidContactFvPatchVectorField::shadow() const
 {
+    if (settings_.selfContact())
+    {
+        return *this;
+    }
+
     const label shadowi =
         patch().boundaryMesh().findPatchID(shadowPatchName());
 
@@ -60,9 +65,26 @@ Foam::solidContactFvPatchVectorField::coupling() const
 Foam::tmp<Foam::vectorField>
 Foam::solidContactFvPatchVectorField::contactForce(const vectorField& D)
 {
-    vectorField Fs, Fm;
     scalarField ps;
+    return contactForce(D, ps);
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::solidContactFvPatchVectorField::contactForce
+(
+    const vectorField& D,
+    scalarField& ps
+)
+{
+    vectorField Fs, Fm;
     coupling()->forces(D, Fs, Fm, ps);
+    if (settings_.selfContact())
+    {
+        // Both roles on the same faces: each face's own law and the
+        // reaction of the faces that press on it
+        return Fs + Fm;
+    }
     return tmp<vectorField>(new vectorField(master() ? Fm : Fs));
 }
 
@@ -100,15 +122,22 @@ void Foam::solidContactFvPatchVectorField::updateFromCells()
 {
     if (coupling())
     {
-        const vectorField F(contactForce(primitiveField()));
+        scalarField ps;
+        const vectorField F(contactForce(primitiveField(), ps));
         vectorField& t = history_.traction();
         t = F/patch().magSf();
         gradient() =
             (t - history_.explicitTraction())
            /solidPatchTractions::impK(patch());
+
+        // Self-contact: the pressure of the face's own law (its slave
+        // part), which the method and the convergence test follow; the
+        // traction is the face's whole (contactReporter shows that)
         history_.pressure() =
             master()
           ? scalarField(-(t & patch().nf()))
+          : settings_.selfContact()
+          ? ps
           : scalarField(t & corrector_.pair().normal());
     }
 
@@ -257,10 +286,13 @@ void Foam::solidContactFvPatchVectorField::updateCoeffs()
     else
     {
         corrector_.correct(*this, shadowPtr(), settings_, history_);
+        const contactInterfaceCoupling& c = corrector_.coupling();
         setCoefficients
         (
             contactForce(primitiveField()),
-            corrector_.coupling().slaveDiag()
+            settings_.selfContact()
+          ? vectorField(c.slaveDiag() + c.masterDiag())
+          : vectorField(c.slaveDiag())
         );
         corrector_.finish(patch(), history_);
     }
@@ -383,11 +415,18 @@ void Foam::solidContactFvPatchVectorField::addNeighbours
         return;
     }
 
+    // Self-contact: the patch is both, its faces the partners' too
     const scalarField nb
     (
-        master()
-      ? c->masterNeighbour(psi, cmpt, partnerCells)
-      : c->slaveNeighbour(psi, cmpt, partnerCells)
+        settings_.selfContact()
+      ? scalarField
+        (
+            c->slaveNeighbour(psi, cmpt, partnerCells)
+          + c->masterNeighbour(psi, cmpt, partnerCells)
+        )
+      : master()
+      ? scalarField(c->masterNeighbour(psi, cmpt, partnerCells))
+      : scalarField(c->slaveNeighbour(psi, cmpt, partnerCells))
     );
 
     // The neighbours enter the matrix product with the sign of an internal

@@ -250,6 +250,58 @@ void Foam::contactCorrector::clearGeometry()
 }
 
 
+void Foam::contactCorrector::limitSelfReach
+(
+    const fvPatch& patch,
+    const fvPatchVectorField* master,
+    const vectorField& Df,
+    contactSettings& settings
+)
+{
+    // A face that sees its own patch more than half a cell behind it sees
+    // the far side of the wall it bounds, not a face pressed into it: no
+    // state of a converged step penetrates by half a cell
+    const scalarField h(cellSizeNormal(patch));
+    const scalarField& g = pair_->gap();
+    const boolList& inRange = pair_->inRange();
+    scalar wall = GREAT;
+    label nThrough = 0;
+    forAll(g, facei)
+    {
+        if (inRange[facei] && g[facei] < -0.5*h[facei])
+        {
+            wall = min(wall, -g[facei]);
+            ++nThrough;
+        }
+    }
+    reduce(wall, minOp<scalar>());
+    reduce(nThrough, sumOp<label>());
+    if (!nThrough)
+    {
+        return;
+    }
+
+    if (settings.searchDistanceGiven())
+    {
+        FatalIOErrorInFunction(settings.dict())
+            << "Entry 'searchDistance " << settings.searchDistance()
+            << "' of " << settings.dict().name() << " (self-contact) reaches"
+            << " through the body: " << nThrough << " faces of "
+            << patch.name() << " see the patch's far side of a wall "
+            << wall << " m behind them. Set searchDistance below the"
+            << " thinnest wall, e.g. " << 0.5*wall << exit(FatalIOError);
+    }
+
+    const scalar d = 0.5*wall;
+    Info<< "    contact " << patch.name() << ": self-contact searchDistance "
+        << settings.searchDistance() << " m (the default) reaches through"
+        << " a wall " << wall << " m thick; using " << d << " m" << endl;
+    settings.setSearchDistance(d);
+    build(patch, master ? &master->patch() : nullptr, settings);
+    pair_->update(masterDisplacement(master), Df);
+}
+
+
 void Foam::contactCorrector::correct
 (
     const fixedGradientFvPatchVectorField& slave,
@@ -290,6 +342,10 @@ void Foam::contactCorrector::correct
     {
         const scalar t0 = timer_.elapsedTime();
         pair_->update(masterDisplacement(master), Df);
+        if (firstUpdate && settings.selfContact())
+        {
+            limitSelfReach(patch, master, Df, settings);
+        }
         searchTime_ += timer_.elapsedTime() - t0;
     }
     if (newStep)
@@ -307,7 +363,17 @@ void Foam::contactCorrector::correct
         h.traction() =
             solidPatchTractions::impK(patch)*slave.gradient()
           + h.explicitTraction();
-        h.pressure() = h.traction() & pair_->normal();
+        if (settings.selfContact())
+        {
+            // The face's own law's part of its traction: the rest is the
+            // reaction of the faces that press on it
+            vectorField Fs, Fm;
+            coupling_->forces(slave.primitiveField(), Fs, Fm, h.pressure());
+        }
+        else
+        {
+            h.pressure() = h.traction() & pair_->normal();
+        }
     }
 
     // 3. The state

@@ -28,6 +28,7 @@ Foam::contactPatchPair::contactPatchPair
 :
     slave_(slave),
     master_(master),
+    self_(slave.index() == master.index()),
     searchDistance_(searchDistance),
     smoothNormals_(smoothNormals),
     masterFaceSize_(0),
@@ -238,6 +239,47 @@ void Foam::contactPatchPair::gatherMasterSurface
     for (const face& f : masterRefFaces_)
     {
         masterFaces_.push_back(std::vector<int>(f.begin(), f.end()));
+    }
+
+    if (self_)
+    {
+        setSelfExclusions();
+    }
+}
+
+
+void Foam::contactPatchPair::setSelfExclusions()
+{
+    // The slave's points among the merged master points: merged again
+    // with them, with the tolerance the master's were merged with
+    const pointField& lp = slave_.patch().localPoints();
+    const label nMaster = masterRefPoints_.size();
+    pointField all(nMaster + lp.size());
+    SubList<point>(all, nMaster) = masterRefPoints_;
+    SubList<point>(all, lp.size(), nMaster) = lp;
+
+    const boundBox bb(master_.patch().localPoints(), true);
+    labelList pointMap;
+    pointField merged;
+    mergePoints(all, 1e-9*max(bb.mag(), VSMALL), false, pointMap, merged);
+
+    labelList mergedToMaster(merged.size(), -1);
+    for (label k = 0; k < nMaster; ++k)
+    {
+        mergedToMaster[pointMap[k]] = k;
+    }
+
+    const c4f::search::SelfContactFilter filter(masterFaces_);
+    const faceList& lf = slave_.patch().localFaces();
+    selfAround_.resize(lf.size());
+    forAll(lf, facei)
+    {
+        std::vector<int> pts;
+        for (const label p : lf[facei])
+        {
+            pts.push_back(int(mergedToMaster[pointMap[nMaster + p]]));
+        }
+        selfAround_[facei] = filter.facesAround(pts);
     }
 }
 
@@ -568,7 +610,34 @@ void Foam::contactPatchPair::update
     forAll(x, facei)
     {
         const Eigen::Vector3d q(c4fConvert::toEigen(x[facei]));
-        const c4f::search::SearchHit hit = closest(q);
+        c4f::search::SearchHit hit;
+        if (self_)
+        {
+            const Eigen::Vector3d ns
+            (
+                c4f::transfer::polygonPlane(slavePolygon(facei))
+               .normal.normalized()
+            );
+            hit = closestSelf(q, facei, ns);
+
+            // One pass: of two faces that face each other, one is the
+            // slave, the other only its master
+            if
+            (
+                hit.found
+             && !c4f::search::SelfContactFilter::slaveOfPair
+                (
+                    ns, normalAt(hit.face, hit.point)
+                )
+            )
+            {
+                hit = c4f::search::SearchHit();
+            }
+        }
+        else
+        {
+            hit = closest(q);
+        }
 
         inRange_[facei] = hit.found;
         if (hit.found)
@@ -675,7 +744,13 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
             // Only faces that face the slave: the far side of a thin
             // master body must not share the force
             const double facing =
-                masterNormals_[j].dot(masterNormals_[hitFace_[facei]]);
+                self_
+             && c4f::search::SelfContactFilter::excluded
+                (
+                    selfAround_[facei], ns, j, masterNormals_[j]
+                )
+              ? -1
+              : masterNormals_[j].dot(masterNormals_[hitFace_[facei]]);
             const c4f::transfer::Polygon overlap
             (
                 facing > 0
@@ -721,6 +796,63 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
         overlapGaps_[facei].transfer(gaps);
         overlapCentroids_[facei].transfer(cents);
     }
+}
+
+
+c4f::search::SearchHit Foam::contactPatchPair::closestSelf
+(
+    const Eigen::Vector3d& q,
+    const label i,
+    const Eigen::Vector3d& ns
+) const
+{
+    // The tree cannot leave faces out: its candidates near q, filtered and
+    // projected onto one by one (a face's gap decides whether it is a
+    // pair, c4f::search::SelfContactFilter)
+    const double grow = searchDistance_ + 2*staleness_;
+    const std::vector<int> cand
+    (
+        search_.facesInBox
+        (
+            q - Eigen::Vector3d::Constant(grow),
+            q + Eigen::Vector3d::Constant(grow)
+        )
+    );
+
+    c4f::search::SearchHit best;
+    std::vector<Eigen::Vector3d> pts;
+    for (const int j : cand)
+    {
+        const Eigen::Vector3d& nm = masterNormals_[j];
+        if (c4f::search::SelfContactFilter::excluded(selfAround_[i], ns, j, nm))
+        {
+            continue;
+        }
+        pts.clear();
+        std::vector<std::vector<int>> face(1);
+        for (const int v : masterFaces_[j])
+        {
+            face[0].push_back(int(pts.size()));
+            pts.push_back(masterPoints_[v]);
+        }
+        c4f::search::SearchHit hit =
+            c4f::search::bruteForceClosest(pts, face, q, searchDistance_);
+        if
+        (
+            !hit.found
+         || c4f::search::SelfContactFilter::behindUnfaced
+            (
+                ns, nm, (q - hit.point).dot(normalAt(j, hit.point))
+            )
+         || (best.found && hit.distance >= best.distance)
+        )
+        {
+            continue;
+        }
+        hit.face = j;
+        best = hit;
+    }
+    return best;
 }
 
 

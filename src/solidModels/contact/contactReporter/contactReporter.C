@@ -112,7 +112,7 @@ void Foam::contactReporter::setFields
     // per reference area (the total-Lagrangian P.N), Nanson's da/dA apart
     const scalarField ratio(solidPatchTractions::areaRatio(patch_));
     outputField<scalar>(mesh, "contactPressure", dimPressure)
-        .boundaryFieldRef()[patchi] == history_.pressure()/ratio;
+        .boundaryFieldRef()[patchi] == shownPressure()/ratio;
     outputField<scalar>(mesh, "contactGap", dimLength)
         .boundaryFieldRef()[patchi] == gap;
     outputField<vector>(mesh, "contactTraction", dimPressure)
@@ -163,6 +163,19 @@ Foam::contactReporter::contactReporter
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::tmp<Foam::scalarField> Foam::contactReporter::shownPressure() const
+{
+    // Self-contact: the history's pressure is the face's own law's part
+    // (the method's), the face carries the reaction of the faces that
+    // press on it besides
+    if (corrector_ && corrector_->hasPair() && corrector_->pair().selfContact())
+    {
+        return -(history_.traction() & patch_.nf());
+    }
+    return history_.pressure();
+}
+
+
 void Foam::contactReporter::writeFields() const
 {
     if (corrector_)
@@ -196,16 +209,22 @@ Foam::contactReporter::row Foam::contactReporter::report() const
       ? corrector_->pair().gap()
       : scalarField(patch_.size(), GREAT)
     );
+    // Self-contact: each contact pushes on both its sides, which are faces
+    // of this patch: the force across it along each face's own inward
+    // normal, counted once (half the patch's sum)
+    const bool self = searched && corrector_->pair().selfContact();
     const vectorField n
     (
-        searched ? corrector_->pair().normal() : vectorField(-patch_.nf())
+        searched && !self
+      ? corrector_->pair().normal()
+      : vectorField(-patch_.nf())
     );
     // The gap the constraint closes (per master face where it is posed
     // there), that of the state the last corrector started from
     const scalarField& cg = corrector_->lastState().constraintGap;
     const scalarField& penetrationGap = cg.size() == A.size() ? cg : gap;
     const vectorField& traction = history_.traction();
-    const scalarField& pressure = history_.pressure();
+    const scalarField pressure(shownPressure());
     const boolList& active = history_.cond().active;
     // Forces from the tractions per reference area and the reference
     // areas; the area and the pressure per current area (finite
@@ -248,6 +267,13 @@ Foam::contactReporter::row Foam::contactReporter::report() const
             r.toolMoment -= (xbar[facei] - c) ^ (traction[facei]*A[facei]);
         }
         reduce(r.toolMoment, sumOp<vector>());
+    }
+
+    if (self)
+    {
+        r.normalForce *= 0.5;
+        r.tangentialForce *= 0.5;
+        r.contactArea *= 0.5;
     }
 
     reduce(r.normalForce, sumOp<scalar>());

@@ -86,12 +86,13 @@ void Foam::contactSettings::checkPatch
     {
         // No shadow to check; the tool's own entries are its class's
     }
-    else if (shadowPatchName_ == patch.name())
+    else if (self_ && master_)
     {
         FatalIOErrorInFunction(dict)
-            << "Entry 'shadowPatch " << shadowPatchName_ << "' of "
-            << dict.name() << " names the patch itself; it must name the"
-            << " other patch of the contact pair" << exit(FatalIOError);
+            << "Entry 'master yes' of " << dict.name() << ", whose"
+            << " shadowPatch names the patch itself (self-contact): the"
+            << " patch is both sides, its entry the slave's; remove"
+            << " 'master' or set 'master no'" << exit(FatalIOError);
     }
 
     if (!rigid_ && patch.boundaryMesh().findPatchID(shadowPatchName_) < 0)
@@ -210,6 +211,7 @@ Foam::contactSettings::contactSettings()
     dict_(),
     rigid_(false),
     shadowPatchName_(),
+    self_(false),
     master_(false),
     searchDistance_(-1),
     normals_("faces"),
@@ -232,7 +234,13 @@ Foam::contactSettings::contactSettings
     (
         rigid_ ? word::null : dict.get<word>("shadowPatch")
     ),
-    master_(rigid_ ? false : dict.get<bool>("master")),
+    self_(!rigid_ && shadowPatchName_ == patch.name()),
+    master_
+    (
+        rigid_ || self_
+      ? dict.getOrDefault<bool>("master", false)
+      : dict.get<bool>("master")
+    ),
     searchDistance_(dict.getOrDefault<scalar>("searchDistance", -1)),
     normals_(dict.getOrDefault<word>("normals", "faces")),
     rebuildTolerance_(dict.getOrDefault<scalar>("rebuildTolerance", 0)),
@@ -263,7 +271,7 @@ Foam::contactSettings::contactSettings
     // The originals: a copied dictionary has no parent (the boundaryField
     // that holds the shadow's entry)
     checkPatch(patch, dict);
-    if (!rigid_)
+    if (!rigid_ && !self_)
     {
         checkShadow(patch, dict, typeName);
     }
@@ -293,7 +301,7 @@ void Foam::contactSettings::writeSlave(Ostream& os) const
     os.writeEntry("rebuildTolerance", rebuildTolerance_);
     os.writeEntry("constraintFaces", constraintFaces_);
     os.writeEntry("cellSize", cellSize_);
-    if (dict_.found("searchDistance"))
+    if (searchDistanceGiven())
     {
         os.writeEntry("searchDistance", searchDistance_);
     }
