@@ -1,5 +1,8 @@
 """The tutorial runs several tests read (each made once per session by
 harness.tutorial_run; the test that owns a run asserts its own checks)."""
+import os
+import re
+
 import harness
 from c4fpost import methods
 
@@ -167,10 +170,54 @@ def hertz_sphere_variant(sphere):
                                 ["-method", LM, "-sphere", sphere])
 
 
-def self_contact_strip(method, parallel=False):
-    """selfContactStrip -method `method` [-parallel]: the C-shaped strip
-    closing its slot, one patch its own master."""
-    return harness.tutorial_run("selfContactStrip",
-                                "selfContactStrip_" + method
-                                + ("_parallel" if parallel else ""),
-                                ["-method", method] + (["-parallel"] if parallel else []))
+def self_contact_strip(method, parallel=False, friction=None, finite=False,
+                       two_patches=False):
+    """selfContactStrip -method `method` [-parallel] [-friction f]
+    [-finiteStrain]: the C-shaped strip closing its slot, one patch its
+    own master; two_patches: the same strip with the slot's roof (slave)
+    and floor (master) as a two-patch pair, every other face of the strip
+    traction-free (the self-contact's reference)."""
+    name = "selfContactStrip_" + method
+    args = ["-method", method]
+    if friction:
+        name += "_" + friction
+        args += ["-friction", friction]
+    if finite:
+        name += "_finiteStrain"
+        args += ["-finiteStrain"]
+    if parallel:
+        name += "_parallel"
+        args += ["-parallel"]
+    edit = None
+    if two_patches:
+        name += "_twoPatches"
+        edit = lambda case: strip_as_two_patches(case, method, friction or "frictionless")
+    return harness.tutorial_run("selfContactStrip", name, args, edit=edit)
+
+
+def strip_as_two_patches(case, method, friction):
+    """selfContactStrip's copy `case` with the slot's roof and floor taken
+    out of the patch strip as the pair roof (slave) / floor (master)."""
+    bm = os.path.join(case, "system", "blockMeshDict")
+    s = open(bm).read()
+    for face in ("(4 18 19 5)", "(7 21 22 8)", "(8 22 23 9)"):
+        s = re.sub(r"\n\s*%s[^\n]*" % re.escape(face), "", s, count=1)
+    s = s.replace("    frontAndBack\n", "    floor { type wall; faces ((4 18 19 5)); }\n"
+                  "    roof { type wall; faces ((7 21 22 8) (8 22 23 9)); }\n"
+                  "    frontAndBack\n", 1)
+    open(bm, "w").write(s)
+    d = os.path.join(case, "0", "D")
+    s = open(d).read()
+    roof = ("    roof\n    {\n        type solidContact;\n        shadowPatch floor;\n"
+            "        master no;\n        method %s;\n        friction %s;\n"
+            "        coulombCoeffs { mu 0.3; }\n"
+            "        constitutiveLawCoeffs { cN 1e21; n 2; }\n"
+            "        searchDistance 0.005;\n        value uniform (0 0 0);\n    }\n"
+            "    floor\n    {\n        type solidContact;\n        shadowPatch roof;\n"
+            "        master yes;\n        value uniform (0 0 0);\n    }\n"
+            % (method, friction))
+    s = re.sub(r"    strip\n    \{.*?\n    \}\n",
+               "    strip\n    {\n        type solidTraction;\n        traction constant (0 0 0);\n"
+               "        pressure constant 0;\n        value uniform (0 0 0);\n    }\n" + roof,
+               s, count=1, flags=re.S)
+    open(d, "w").write(s)

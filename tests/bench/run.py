@@ -84,6 +84,13 @@ GAMG's coarse levels (the default) and on the finest only, against two
 contact-free equivalents of the converged run: correctors, linear
 iterations per corrector, wall time and their ratios; markdown in gamg.md.
 
+Rigid tools and self-contact (`run.py --only rigid`, issue 23):
+rigidPunch at -refine 1 and 2 (the force against Sneddon's at each step,
+correctors, wall time) and selfContactStrip at -refine 1, 2 and 4 (the
+force across the slot against CalculiX's at each contact step, its
+error in % of the force; correctors and wall time side by side with the
+same strip as a two-patch pair, roof and floor, on the same mesh).
+
 The big case (`run.py --only big`, issue 24): hertzSphere at about 1e6
 cells, serial and on 2 processors: wall time per corrector, linear
 iterations, the contact update's share, memory per process, the master
@@ -1515,13 +1522,65 @@ def ironing_bench():
             "" if f["converged"] else "  (free run failed)"))
 
 
+def rigid_bench():
+    """rigidPunch against Sneddon and selfContactStrip against CalculiX
+    over mesh levels; the self-contact's correctors and wall time over the
+    two-patch model's of the same strip (issue 23)."""
+    sys.path.insert(0, os.path.join(ROOT, "tests"))
+    import runs as test_runs
+    print("\n== Rigid tools: rigidPunch (an STL with a sharp edge) against Sneddon")
+    tut = os.path.join(ROOT, "tutorials", "rigidPunch")
+    sys.path.insert(0, os.path.join(tut, "validation"))
+    punch = importlib.import_module("compareRigidPunch")
+    print("%-7s %8s %-22s %8s %7s" % ("refine", "cells", "F/F_Sneddon - 1 [%]", "corr",
+                                       "wall s"))
+    for level in ("1", "2"):
+        r = bench_case("rigidPunch_%s" % level, tut, allrun=["-refine", level])
+        if not r["converged"]:
+            print("%-7s did not converge (rc=%d)" % (level, r["rc"]))
+            continue
+        res = punch.compare(r["case"])
+        cells = len(foamio.cell_centres_volumes(r["case"])[1])
+        print("%-7s %8d %-22s %8d %7.1f" % (
+            level, cells, " ".join("%+.2f" % (100 * (st["F"] / st["FS"] - 1))
+                                   for st in res["steps"]), r["ncorr"], r["wall"]))
+
+    print("\n== Self-contact: selfContactStrip against CalculiX (0.5 mm CPE8); "
+          "the same strip as a two-patch pair (roof/floor) alongside")
+    tut = os.path.join(ROOT, "tutorials", "selfContactStrip")
+    sys.path.insert(0, os.path.join(tut, "validation"))
+    strip = importlib.import_module("compareSelfContact")
+    print("%-7s %7s %-30s %7s %7s %8s %8s %7s" % (
+        "refine", "cells", "F/F_ccx - 1 at contact [%]", "corr", "wall s", "corr2p",
+        "wall2p s", "ratio"))
+    for level in ("1", "2", "4"):
+        r = bench_case("selfContactStrip_%s" % level, tut, allrun=["-refine", level])
+        two = bench_case("selfContactStrip_twoPatches_%s" % level, tut,
+                         allrun=["-refine", level],
+                         edit=lambda case: test_runs.strip_as_two_patches(
+                             case, "lagrangeMultiplier", "frictionless"))
+        if not r["converged"]:
+            print("%-7s did not converge (rc=%d)" % (level, r["rc"]))
+            continue
+        res = strip.compare(r["case"])
+        cells = len(foamio.cell_centres_volumes(r["case"])[1])
+        errs = " ".join("%+.2f" % (100 * (st["F"] / st["Fref"] - 1))
+                        for st in res["steps"] if st["Fref"] >= 1e-4 * st["load"])
+        print("%-7s %7d %-30s %7d %7.1f %8s %8s %7s" % (
+            level, cells, errs, r["ncorr"], r["wall"],
+            two["ncorr"] if two["converged"] else "-",
+            "%.1f" % two["wall"] if two["converged"] else "-",
+            "%.2f" % (r["wall"] / two["wall"]) if two["converged"] else "-"))
+
+
 def main():
     global FRICTION_CATTANEO_METHODS
     import argparse
     ap = argparse.ArgumentParser(description="contact4foam benchmarks")
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa", "roles",
                                        "perturbedLagrange", "methods", "friction",
-                                       "unstructured", "finiteStrain", "ironing", "gamg", "big"),
+                                       "unstructured", "finiteStrain", "ironing", "rigid",
+                                       "gamg", "big"),
                     help="run one part only (convergence includes hertz's runs)")
     ap.add_argument("--cattaneo-methods", nargs="+", metavar="METHOD",
                     help="the friction part's cattaneoMindlin methods (default: %s;"
@@ -1554,6 +1613,8 @@ def main():
         finite_strain_bench()
     if args.only in (None, "ironing"):
         ironing_bench()
+    if args.only in (None, "rigid"):
+        rigid_bench()
     if args.only in (None, "gamg"):
         gamg_bench()
     if args.only in (None, "big"):

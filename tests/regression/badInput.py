@@ -369,4 +369,12 @@ CASES = [
      [("0/D", r"^(\s*)rigidSurface\s*$", r"\1shadowPatch blockTop;\n\1rigidSurface")],
      ["FOAM FATAL IO ERROR", "Entry 'shadowPatch'", "beside 'rigidSurface'",
       "blockTop"]),
+    ("selfContactMasterYes", "selfContactStrip",
+     [("0/D", r"^(\s*)shadowPatch\s+strip;", r"\1shadowPatch strip;\n\1master yes;")],
+     ["FOAM FATAL IO ERROR", "Entry 'master yes'", "self-contact", "strip",
+      "'master no'"]),
+    ("selfContactSearchThroughWall", "selfContactStrip",
+     [("0/D", r"^(\s*)shadowPatch\s+strip;", r"\1shadowPatch strip;\n\1searchDistance 0.02;")],
+     ["FOAM FATAL IO ERROR", "Entry 'searchDistance 0.02'", "reaches through the body",
+      "m behind them", "thinnest wall", "strip"]),
 ]

@@ -244,6 +244,21 @@ def test_finite_strain_cylinder_against_calculix():
     ck.verify()
 
 
+@pytest.mark.parametrize("method", harness.methods_where(finite_strain=True, open_start=False))
+def test_finite_strain_cylinder_rigid_against_calculix(method):
+    """finiteStrainCylinder -cylinder rigid (issue 23 under finite
+    deformation): a rigid cylinder (a rigidSurface, no mesh) pressed into
+    the St Venant-Kirchhoff block by 20 % of its radius; every step
+    converged and the force within 2 % of CalculiX's with the cylinder a
+    rigid body (validation/calculix-stVenantKirchhoff-rigid.csv), for
+    every method that takes finite strain and a rigid tool."""
+    ck = harness.Checks()
+    name = "finiteStrainCylinder_rigid_" + method
+    ck.run(harness.tutorial_run("finiteStrainCylinder", name,
+                                ["-cylinder", "rigid", "-method", method]), name)
+    ck.verify()
+
+
 @pytest.mark.parametrize("rotate", [False, True], ids=["aligned", "rotated"])
 def test_finite_strain_patch_test_3d(rotate):
     """contactPatchTest3D -finiteStrain (compareFiniteStrain3D.py): the two

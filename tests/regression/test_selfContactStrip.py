@@ -89,3 +89,55 @@ def test_self_contact_strip_restart_mid_load():
             ck.add("%s/force_t%g_equals_uninterrupted" % (name, t), err <= 1e-6, f, f0,
                    err, 1e-6)
     ck.verify()
+
+
+def report_rows(case, patch):
+    return {x["time"]: x for x in contactreport.rows(case, patch)}
+
+
+@pytest.mark.parametrize("friction", ["frictionless", "coulomb"])
+@pytest.mark.xdist_group("selfContactStrip_twoPatches")
+def test_self_contact_equals_two_patches(friction):
+    """The strip as one self-contact patch and as the two-patch pair
+    roof/floor (the roof the slave in both: the one-pass choice): the same
+    normal and tangential force at every step, to 1e-3 of the largest
+    (measured 6e-5 frictionless: the search distance and the patch-wide
+    h of the two models differ). With Coulomb friction (mu 0.3) the arm's
+    end slides along the lower arm as it lands: F_T = mu F_N where it
+    slips."""
+    ck = harness.Checks()
+    name = "selfContactStrip_%s_%s_vs_twoPatches" % (runs.LM, friction)
+    fr = None if friction == "frictionless" else friction
+    one = runs.self_contact_strip(runs.LM, friction=fr)
+    two = runs.self_contact_strip(runs.LM, friction=fr, two_patches=True)
+    for r, what in ((one, "self"), (two, "twoPatches")):
+        ck.add("%s/%s_Allrun" % (name, what), r["rc"] == 0,
+               note="rc=%d, see %s" % (r["rc"], r["case"]))
+        if r["rc"] == 0:
+            ck.steps_converged(r["case"], "%s/%s" % (name, what))
+    if one["rc"] == 0 and two["rc"] == 0:
+        a, b = report_rows(one["case"], PATCH), report_rows(two["case"], "roof")
+        ck.add(name + "/same_steps", sorted(a) == sorted(b),
+               note="(%d and %d steps)" % (len(a), len(b)))
+        scale = max([abs(x["normalForce"]) for x in b.values()] + [1e-30])
+        for t in sorted(set(a) & set(b)):
+            for col in ("normalForce", "tangentialForce"):
+                err = abs(a[t][col] - b[t][col]) / scale
+                ck.add("%s/%s_t%g" % (name, col, t), err <= 1e-3, a[t][col], b[t][col],
+                       err, 1e-3)
+    ck.verify()
+
+
+FINITE = [m for m in METHODS if methods.table()[m].finite_strain]
+
+
+@pytest.mark.parametrize("method", [pytest.param(m, marks=group(m)) for m in FINITE])
+def test_self_contact_strip_finite_strain(method):
+    """Allrun -finiteStrain (nonlinearGeometry yes, St Venant-Kirchhoff)
+    against CalculiX under NLGEOM (validation/calculix-nlgeom.csv, the
+    pressure a dead load as the tutorial's): the same checks, for every
+    method with finiteStrain=yes."""
+    ck = harness.Checks()
+    r = runs.self_contact_strip(method, finite=True)
+    ck.run(r, "selfContactStrip_%s_finiteStrain" % method)
+    ck.verify()

@@ -25,9 +25,15 @@ writes the curve (approach [m], force [N]) to --csv (default: this
 script's directory, calculix-<law>.csv, the file compareCalculix.py
 reads).
 
+With --rigid the cylinder is a rigid body (*RIGID BODY about a node at
+its centre, moved down as the top was, x and the rotation held; the force
+the reaction on the block's clamped bottom, CalculiX giving the
+reference node none): Allrun -cylinder rigid's rigidSurface. Default CSV then
+calculix-<law>-rigid.csv.
+
 Usage:
     calculix.py [--law stVenantKirchhoff|neoHookean] [--size 2e-3]
-                [--work DIR] [--csv FILE]
+                [--rigid] [--work DIR] [--csv FILE]
 """
 import argparse
 import os
@@ -91,7 +97,7 @@ Physical Curve("BOT") = {{13}};
 """
 
 
-def write_model(work, law, size):
+def write_model(work, law, size, rigid=False):
     geo = os.path.join(work, "mesh.geo")
     with open(geo, "w") as f:
         f.write(GEO.format(R=R, W=W, H=H, hc=size, hf=20*size))
@@ -145,12 +151,32 @@ def write_model(work, law, size):
                 "1e12\n"
                 "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\n"
                 "SLAVE, MASTER\n")
-        f.write("*BOUNDARY\nBOT, 1, 2, 0\nCSYM, 1, 1, 0\nBSYM, 1, 1, 0\n"
-                "TOP, 1, 1, 0\n")
+        load = "TOP"
+        if rigid:
+            # The cylinder a rigid body about a reference node at its
+            # centre (and CalculiX's rotation node), the reference node
+            # moved as the top was; x held, no rotation
+            ref, rot = max(nodes) + 1, max(nodes) + 2
+            cyl = sorted(set(n for _, c in elsets["CYL"] for n in c))
+            f.write("*NODE, NSET=REF\n%d, 0, %.12g, 0\n" % (ref, R))
+            f.write("*NODE, NSET=ROT\n%d, 0, %.12g, 0\n" % (rot, R))
+            f.write("*NSET, NSET=CYLALL\n")
+            for k in range(0, len(cyl), 10):
+                f.write(", ".join(str(n) for n in cyl[k:k + 10]) + "\n")
+            f.write("*RIGID BODY, NSET=CYLALL, REF NODE=%d, ROT NODE=%d\n" % (ref, rot))
+            f.write("*BOUNDARY\nBOT, 1, 2, 0\nBSYM, 1, 1, 0\nREF, 1, 1, 0\n"
+                    "REF, 3, 3, 0\nROT, 1, 3, 0\n")
+            load = "REF"
+        else:
+            f.write("*BOUNDARY\nBOT, 1, 2, 0\nCSYM, 1, 1, 0\nBSYM, 1, 1, 0\n"
+                    "TOP, 1, 1, 0\n")
         f.write("*STEP, NLGEOM, INC=10000\n*STATIC\n%.12g, 1.0, 1e-6, %.12g\n"
                 % (1.0/STEPS, 1.0/STEPS))
-        f.write("*BOUNDARY\nTOP, 2, 2, %.12g\n" % (-DELTA))
-        f.write("*NODE PRINT, NSET=TOP, TOTALS=ONLY\nRF\n*END STEP\n")
+        f.write("*BOUNDARY\n%s, 2, 2, %.12g\n" % (load, -DELTA))
+        # The force through the block: the reaction on its clamped bottom
+        # (CalculiX gives a rigid body's reference node no reaction)
+        f.write("*NODE PRINT, NSET=%s, TOTALS=ONLY\nRF\n*END STEP\n"
+                % ("BOT" if rigid else load))
     return len(elsets["CYL"]) + len(elsets["BLK"]), len(master)
 
 
@@ -159,30 +185,37 @@ def main():
     ap.add_argument("--law", default="stVenantKirchhoff",
                     choices=["stVenantKirchhoff", "neoHookean"])
     ap.add_argument("--size", type=float, default=2e-3)
+    ap.add_argument("--rigid", action="store_true",
+                    help="the cylinder a rigid body (Allrun -cylinder rigid)")
     ap.add_argument("--work", default="calculix")
     ap.add_argument("--csv")
     a = ap.parse_args()
     csv = a.csv or os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "calculix-%s.csv" % a.law)
+                                "calculix-%s%s.csv" % (a.law, "-rigid" if a.rigid else ""))
     for tool in ("gmsh", "ccx"):
         if not shutil.which(tool):
             sys.exit("calculix.py: %s not found (Debian: gmsh, calculix-ccx)" % tool)
-    work = os.path.join(a.work, a.law)
+    work = os.path.join(a.work, a.law + ("-rigid" if a.rigid else ""))
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    nel, nmaster = write_model(work, a.law, a.size)
+    nel, nmaster = write_model(work, a.law, a.size, a.rigid)
     r = subprocess.run(["ccx", "-i", "model"], cwd=work,
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        universal_newlines=True)
     open(os.path.join(work, "log.ccx"), "w").write(r.stdout)
-    forces = read_totals(os.path.join(work, "model.dat"), "TOP")
+    forces = read_totals(os.path.join(work, "model.dat"), "BOT" if a.rigid else "TOP")
+    if a.rigid:
+        # the bottom's reaction pushes up: the contact force, as the top's
+        # reaction (pushing down) is in the elastic run
+        forces = [(t, -fy) for t, fy in forces]
     if r.returncode != 0 or "Job finished" not in r.stdout or not forces \
             or abs(forces[-1][0] - 1) > 1e-9:
         sys.exit("calculix.py: ccx did not finish the step; see %s/log.ccx" % work)
     with open(csv, "w") as f:
         f.write("# CalculiX %s, %d CPE8, element size %g m at the contact, "
-                "%d master faces\n# approach [m], force [N] (thickness %g m)\n"
-                % (a.law, nel, a.size, nmaster, DZ))
+                "%d master faces%s\n# approach [m], force [N] (thickness %g m)\n"
+                % (a.law, nel, a.size, nmaster,
+                   ", the cylinder a rigid body" if a.rigid else "", DZ))
         for t, fy in forces:
             f.write("%.9g, %.9g\n" % (t*DELTA, -fy))
     print("CalculiX (%s, %d elements): %d increments, F(%.3g m) = %.6g N -> %s"

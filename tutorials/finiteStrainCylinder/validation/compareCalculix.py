@@ -49,7 +49,7 @@ def read_report(case):
     rows = {}
     for start in sorted(os.listdir(d), key=float):
         for name in sorted(os.listdir(os.path.join(d, start))):
-            if not re.fullmatch(r"cylinderContact(_\d+)?\.dat", name):
+            if not re.fullmatch(r"(cylinder|block)Contact(_\d+)?\.dat", name):
                 continue
             for line in open(os.path.join(d, start, name)):
                 if line.startswith("#") or not line.strip():
@@ -58,6 +58,15 @@ def read_report(case):
                 rows[float(v[0])] = (float(v[1]), int(v[8]))
     t = np.array(sorted(rows))
     return t, np.array([rows[k][0] for k in t]), np.array([rows[k][1] for k in t])
+
+
+def rigid_cylinder(case):
+    """Whether the run had a rigid cylinder (Allrun -cylinder rigid): the
+    block's top is then the slave that contactReport reports."""
+    d = os.path.join(case, "postProcessing", "contactReport")
+    return any(re.fullmatch(r"blockContact(_\d+)?\.dat", name)
+               for start in (os.listdir(d) if os.path.isdir(d) else [])
+               for name in os.listdir(os.path.join(d, start)))
 
 
 def read_csv(path):
@@ -70,15 +79,16 @@ def compare(case, reference=None):
                             "materialLaw")
     t, F, conv = read_report(case)
     d = t * DELTA_PER_STEP
+    rigid = rigid_cylinder(case)
     ref = reference or os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                    "calculix-%s.csv" % law)
+                                    "calculix-%s%s.csv" % (law, "-rigid" if rigid else ""))
     check, step, _ = patchtest.convergence_check(case, NAME)
     checks = [check]
     allConv = bool(len(t) == 10 and conv.all())
     checks.append(dict(name=NAME + "/all_steps_converged", value=float(len(t) - conv.sum()),
                        reference=0.0, error=float(10 - conv.sum()), tolerance=0.0,
                        passed=allConv, units="steps not converged of 10"))
-    res = dict(law=law, d=d.tolist(), F=F.tolist(), checks=checks)
+    res = dict(law=law, d=d.tolist(), F=F.tolist(), checks=checks, rigid=rigid)
     if os.path.exists(ref):
         dr, Fr = read_csv(ref)
         Fi = np.interp(d, dr, Fr)
@@ -96,7 +106,8 @@ def compare(case, reference=None):
 def plot(res, png):
     plt = patchtest.pyplot()
     fig, ax = plt.subplots(figsize=(6, 4))
-    ax.plot(np.array(res["d"]) * 1e3, res["F"], "o-", label="contact4foam (%s)" % res["law"])
+    ax.plot(np.array(res["d"]) * 1e3, res["F"], "o-", label="contact4foam (%s%s)"
+            % (res["law"], ", rigid cylinder" if res["rigid"] else ""))
     if "Fref" in res:
         ax.plot(np.array(res["dref"]) * 1e3, res["Fref"], "k--", label="CalculiX")
     ax.set_xlabel("approach of the cylinder's top [mm]")
@@ -112,7 +123,7 @@ def main():
         ("--reference", dict(help="CalculiX's curve (default: "
                              "validation/calculix-<law>.csv)"))])
     res = compare(args.case, args.reference)
-    print("%s: law %s" % (NAME, res["law"]))
+    print("%s: law %s%s" % (NAME, res["law"], ", rigid cylinder" if res["rigid"] else ""))
     for k, (d, F) in enumerate(zip(res["d"], res["F"])):
         line = "  approach %.4f m: F = %.6g N" % (d, F)
         if "rel" in res:

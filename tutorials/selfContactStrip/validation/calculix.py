@@ -7,7 +7,10 @@ blockMeshDict): the spine x in [0, 10] mm, the lower arm 10 mm thick to
 x = 110 mm, the slot 2 mm high, the upper arm 10 mm thick to x = 100 mm;
 thickness 1 mm, so the forces are those of the tutorial's one-cell-thick
 mesh. E = 200 GPa, nu = 0.3, small strain (no NLGEOM: the tutorial's
-linear-elastic solid). The bottom y = 0 is clamped; the upper arm's top
+linear-elastic solid), or with --nlgeom finite deformation (NLGEOM, with
+*ELASTIC St Venant-Kirchhoff: Allrun -finiteStrain; the pressure then a
+dead load, nodal forces fixed in direction, as the tutorial's per
+reference area). The bottom y = 0 is clamped; the upper arm's top
 over x in [10, 100] mm carries the pressure of the tutorial's table
 (0/D), read from there.
 
@@ -31,11 +34,11 @@ arm's end corner they are singular; they give where the contact zone
 starts. Writes <work>/model.inp (work: ./calculix), runs ccx there,
 and writes (time, pressure [Pa], contact force [N], contact zone start
 [m]) per step to --csv
-(default: this script's directory, calculix.csv, the file
-compareSelfContact.py reads).
+(default: this script's directory, calculix.csv, or calculix-nlgeom.csv
+with --nlgeom: the files compareSelfContact.py reads).
 
 Usage:
-    calculix.py [--size 5e-4] [--work DIR] [--csv FILE]
+    calculix.py [--size 5e-4] [--nlgeom] [--work DIR] [--csv FILE]
 """
 import argparse
 import os
@@ -44,7 +47,7 @@ import shutil
 import subprocess
 import sys
 
-from c4fpost.calculix import (counter_clockwise, element_faces_on,
+from c4fpost.calculix import (counter_clockwise, element_faces_on, face_edges,
                               read_frd_contact, read_inp, read_section_forces)
 
 E = 2e11
@@ -107,7 +110,7 @@ def pressure_table(case):
             re.findall(r"\(\s*([^()\s]+)\s+([^()\s]+)\s*\)", m.group(1))]
 
 
-def write_model(work, size, table):
+def write_model(work, size, table, nlgeom):
     geo = os.path.join(work, "mesh.geo")
     with open(geo, "w") as f:
         f.write(GEO.format(h=size, xcut=XCUT))
@@ -159,11 +162,25 @@ def write_model(work, size, table):
         f.write("*TIME POINTS, NAME=STEPS\n")
         f.write(", ".join("%.12g" % t for t, _ in table if t > 0) + "\n")
         f.write("*BOUNDARY\nSPINEBOT, 1, 2, 0\nARMBOT, 1, 2, 0\n")
-        f.write("*STEP, INC=10000\n*STATIC\n%.12g, %.12g, 1e-6, %.12g\n"
-                % (0.05, tend, 0.25))
-        f.write("*DLOAD, AMPLITUDE=LOAD\n")
-        for eid, k in top:
-            f.write("%d, P%d, 1\n" % (eid, k))
+        f.write("*STEP%s, INC=10000\n*STATIC\n%.12g, %.12g, 1e-6, %.12g\n"
+                % (", NLGEOM" if nlgeom else "", 0.05, tend, 0.25))
+        if nlgeom:
+            # A dead load, as the tutorial's (solidTraction's pressure under
+            # nonlinearGeometry is per reference area along the reference
+            # normal): the consistent nodal forces of p = 1 on each
+            # quadratic edge, (1, 4, 1)/6 of its length, fixed in direction
+            nodal = {}
+            for a_, b_, m_ in face_edges(body, top):
+                length = abs(nodes[b_][0] - nodes[a_][0])
+                for n_, w in ((a_, 1/6), (b_, 1/6), (m_, 4/6)):
+                    nodal[n_] = nodal.get(n_, 0.0) + w*length*DZ
+            f.write("*CLOAD, AMPLITUDE=LOAD\n")
+            for n_ in sorted(nodal):
+                f.write("%d, 2, %.12g\n" % (n_, -nodal[n_]))
+        else:
+            f.write("*DLOAD, AMPLITUDE=LOAD\n")
+            for eid, k in top:
+                f.write("%d, P%d, 1\n" % (eid, k))
         f.write("*SECTION PRINT, SURFACE=CUT, NAME=SP1, TIME POINTS=STEPS\nSOF\n"
                 "*CONTACT FILE, TIME POINTS=STEPS\nCSTR\n*END STEP\n")
     roof = sorted(set(nsets["ROOF"]), key=lambda n: nodes[n][0])
@@ -173,18 +190,19 @@ def write_model(work, size, table):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--size", type=float, default=5e-4)
+    ap.add_argument("--nlgeom", action="store_true")
     ap.add_argument("--work", default="calculix")
     ap.add_argument("--csv")
     a = ap.parse_args()
     here = os.path.dirname(os.path.abspath(__file__))
-    csv = a.csv or os.path.join(here, "calculix.csv")
+    csv = a.csv or os.path.join(here, "calculix-nlgeom.csv" if a.nlgeom else "calculix.csv")
     for tool in ("gmsh", "ccx"):
         if not shutil.which(tool):
             sys.exit("calculix.py: %s not found (Debian: gmsh, calculix-ccx)" % tool)
     table = pressure_table(os.path.dirname(here))
     shutil.rmtree(a.work, ignore_errors=True)
     os.makedirs(a.work)
-    nel, nslave, roof = write_model(a.work, a.size, table)
+    nel, nslave, roof = write_model(a.work, a.size, table, a.nlgeom)
     r = subprocess.run(["ccx", "-i", "model"], cwd=a.work,
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        universal_newlines=True)
@@ -209,11 +227,12 @@ def main():
     forces = [(t, load[t], c*load[t] + section[t][1], start(t)) for t in times]
     with open(csv, "w") as f:
         f.write("# CalculiX, %d CPE8, element size %g m, %d slave faces, "
-                "frictionless, small strain\n# time, pressure [Pa], force across "
+                "frictionless, %s\n# time, pressure [Pa], force across "
                 "the slot [N] (thickness %g m; time %g the open reference of the "
                 "section force), start of the contact zone on the roof: the "
                 "least x of a slave node with CPRESS > 1e-3 of the largest [m]\n"
-                % (nel, a.size, nslave, DZ, t1))
+                % (nel, a.size, nslave,
+                   "NLGEOM, St Venant-Kirchhoff" if a.nlgeom else "small strain", DZ, t1))
         for t, p, fc, x0 in forces:
             f.write("%.9g, %.9g, %.9g, %.9g\n" % (t, p, fc, x0))
     print("CalculiX (%d elements): %s -> %s"
