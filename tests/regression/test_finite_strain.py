@@ -14,7 +14,10 @@ import shutil
 import pytest
 
 import harness
+from c4fpost import contactreport
 from harness import methods_where
+
+LM = "lagrangeMultiplier"
 
 TUTORIAL = "finiteStrainPatchTest"
 
@@ -244,18 +247,50 @@ def test_finite_strain_cylinder_against_calculix():
     ck.verify()
 
 
-@pytest.mark.parametrize("method", harness.methods_where(finite_strain=True, open_start=False))
+def rigid_cylinder_run(method):
+    return harness.tutorial_run("finiteStrainCylinder", "finiteStrainCylinder_rigid_" + method,
+                                ["-cylinder", "rigid", "-method", method])
+
+
+@pytest.mark.parametrize("method", [pytest.param(m, marks=pytest.mark.xdist_group(
+    "finiteStrainCylinder_rigid_" + m)) for m in methods_where(finite_strain=True,
+                                                               open_start=False)])
 def test_finite_strain_cylinder_rigid_against_calculix(method):
     """finiteStrainCylinder -cylinder rigid (issue 23 under finite
     deformation): a rigid cylinder (a rigidSurface, no mesh) pressed into
     the St Venant-Kirchhoff block by 20 % of its radius; every step
-    converged and the force within 2 % of CalculiX's with the cylinder a
-    rigid body (validation/calculix-stVenantKirchhoff-rigid.csv), for
-    every method that takes finite strain and a rigid tool."""
+    converged and the force within 3 % of CalculiX's with the cylinder a
+    rigid body (validation/calculix-stVenantKirchhoff-rigid.csv; measured
+    at most 1.95 % for the Lagrange multiplier: compareCalculix.py says
+    why not 2 %), for every method that takes finite strain and a rigid
+    tool."""
     ck = harness.Checks()
     name = "finiteStrainCylinder_rigid_" + method
-    ck.run(harness.tutorial_run("finiteStrainCylinder", name,
-                                ["-cylinder", "rigid", "-method", method]), name)
+    ck.run(rigid_cylinder_run(method), name)
+    ck.verify()
+
+
+@pytest.mark.xdist_group("finiteStrainCylinder_rigid_" + LM)
+def test_finite_strain_rigid_cylinder_equals_stiff_one():
+    """Issue 23: the rigid tool under finite deformation against a meshed
+    cylinder 1000 times stiffer than the block (Allrun -cylinder stiff, the
+    cylinder's arc the slave): the force of every step the same to 0.5 %
+    (measured at most 0.1 %: the stiff cylinder's own compliance, 1e-3 of
+    the block's)."""
+    ck = harness.Checks()
+    name = "finiteStrainCylinder_rigid_vs_stiff"
+    rigid = harness.need(rigid_cylinder_run(LM), "finiteStrainCylinder_rigid_" + LM)
+    stiff = harness.tutorial_run("finiteStrainCylinder", "finiteStrainCylinder_stiff_" + LM,
+                                 ["-cylinder", "stiff", "-method", LM])
+    if ck.run(stiff, "finiteStrainCylinder_stiff_" + LM):
+        a = {x["time"]: x["normalForce"] for x in contactreport.rows(rigid, "blockContact")}
+        b = {x["time"]: x["normalForce"] for x in contactreport.rows(stiff["case"],
+                                                                     "cylinderContact")}
+        ck.add(name + "/same_steps", sorted(a) == sorted(b) and len(a) == 10,
+               note="(%d and %d steps)" % (len(a), len(b)))
+        for t in sorted(set(a) & set(b)):
+            err = abs(a[t] - b[t]) / abs(b[t])
+            ck.add("%s/force_t%g" % (name, t), err <= 5e-3, a[t], b[t], err, 5e-3)
     ck.verify()
 
 
