@@ -188,6 +188,31 @@ def need(r, what=None):
     return r["case"]
 
 
+def restart_mid_load(ck, ref, name, patch, start, steps, tol=1e-6):
+    """Restart the finished run `ref` from time `start` (the later times
+    and postProcessing removed) to its last time `steps[-1]`: it must redo
+    exactly `steps` (time names) and report the same normal force of
+    `patch` at each to `tol` relative (checks <name>/run and
+    <name>/force_t<t>_equals_uninterrupted)."""
+    def trim(case):
+        for t in steps:
+            shutil.rmtree(os.path.join(case, t), ignore_errors=True)
+        shutil.rmtree(os.path.join(case, "postProcessing"), ignore_errors=True)
+
+    r = restart_run(ref, end_time=steps[-1], suffix="_restart" + start, prepare=trim)
+    done = re.findall(r"^Time = (\S+)\s+correctors", r["out"], flags=re.M)
+    ok = r["rc"] == 0 and done == list(steps)
+    ck.add(name + "/run", ok, note="rc=%d, steps %s, see %s" % (r["rc"], done, r["case"]))
+    if ok:
+        rows = {x["time"]: x for x in contactreport.rows(r["case"], patch)}
+        refs = {x["time"]: x for x in contactreport.rows(ref, patch)}
+        for t in (float(x) for x in steps):
+            f, f0 = rows[t]["normalForce"], refs[t]["normalForce"]
+            err = abs(f - f0) / abs(f0)
+            ck.add("%s/force_t%g_equals_uninterrupted" % (name, t), err <= tol, f, f0,
+                   err, tol)
+
+
 def forces_agree(ck, case, ref, patch, name, tol, what):
     """Check that two runs of the same steps report the same normal force
     of `patch` at every time, to `tol` relative (checks

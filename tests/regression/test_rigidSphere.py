@@ -7,9 +7,7 @@ exact method and the plain penalty, and the sphere given as a
 triangulated surface (-surface triSurface, 20000 facets of 0.5 mm) against
 the analytic one: F of every step within 0.5 % (the facets' sag is 0.3 %
 of the first step's indentation at the worst, 1.5 times that in F)."""
-import os
 import re
-import shutil
 
 import pytest
 
@@ -51,24 +49,7 @@ def test_rigid_sphere_restart_mid_load():
     ck = harness.Checks()
     name = "rigidSphere_%s_restart" % runs.LM
     ref = harness.need(runs.rigid_sphere(runs.LM), "rigidSphere_" + runs.LM)
-
-    def trim(case):
-        for t in ("4", "5"):
-            shutil.rmtree(os.path.join(case, t), ignore_errors=True)
-        shutil.rmtree(os.path.join(case, "postProcessing"), ignore_errors=True)
-
-    r = harness.restart_run(ref, end_time="5", suffix="_restart3", prepare=trim)
-    steps = re.findall(r"^Time = (\S+)\s+correctors", r["out"], flags=re.M)
-    ok = r["rc"] == 0 and steps == ["4", "5"]
-    ck.add(name + "/run", ok, note="rc=%d, steps %s, see %s" % (r["rc"], steps, r["case"]))
-    if ok:
-        rows = {x["time"]: x for x in contactreport.rows(r["case"], "blockTop")}
-        refs = {x["time"]: x for x in contactreport.rows(ref, "blockTop")}
-        for t in (4.0, 5.0):
-            f, f0 = rows[t]["normalForce"], refs[t]["normalForce"]
-            err = abs(f - f0) / abs(f0)
-            ck.add("%s/force_t%g_equals_uninterrupted" % (name, t), err <= 1e-6, f, f0,
-                   err, 1e-6)
+    harness.restart_mid_load(ck, ref, name, "blockTop", "3", ("4", "5"))
     ck.verify()
 
 

@@ -8,9 +8,6 @@ active face while the slot is open, none away from the arm's end (the
 exclusions of c4f::search::SelfContactFilter); the contact zone's start
 within two cells of CalculiX's. Then parallel = serial and a restart in
 the middle of the load."""
-import os
-import re
-import shutil
 
 import pytest
 
@@ -70,24 +67,7 @@ def test_self_contact_strip_restart_mid_load():
     ck = harness.Checks()
     name = "selfContactStrip_%s_restart" % runs.LM
     ref = harness.need(runs.self_contact_strip(runs.LM), "selfContactStrip_" + runs.LM)
-
-    def trim(case):
-        for t in ("5", "6"):
-            shutil.rmtree(os.path.join(case, t), ignore_errors=True)
-        shutil.rmtree(os.path.join(case, "postProcessing"), ignore_errors=True)
-
-    r = harness.restart_run(ref, end_time="6", suffix="_restart4", prepare=trim)
-    steps = re.findall(r"^Time = (\S+)\s+correctors", r["out"], flags=re.M)
-    ok = r["rc"] == 0 and steps == ["5", "6"]
-    ck.add(name + "/run", ok, note="rc=%d, steps %s, see %s" % (r["rc"], steps, r["case"]))
-    if ok:
-        rows = {x["time"]: x for x in contactreport.rows(r["case"], PATCH)}
-        refs = {x["time"]: x for x in contactreport.rows(ref, PATCH)}
-        for t in (5.0, 6.0):
-            f, f0 = rows[t]["normalForce"], refs[t]["normalForce"]
-            err = abs(f - f0) / abs(f0)
-            ck.add("%s/force_t%g_equals_uninterrupted" % (name, t), err <= 1e-6, f, f0,
-                   err, 1e-6)
+    harness.restart_mid_load(ck, ref, name, PATCH, "4", ("5", "6"))
     ck.verify()
 
 
