@@ -85,8 +85,8 @@ contact-free equivalents of the converged run: correctors, linear
 iterations per corrector, wall time and their ratios; markdown in gamg.md.
 
 Rigid tools and self-contact (`run.py --only rigid`, issue 23):
-rigidPunch at -refine 1 and 2 (the force against Sneddon's at each step,
-correctors, wall time) and selfContactStrip at -refine 1, 2 and 4 (the
+rigidPunch at -refine 0.67, 1 and 1.33 (10, 15 and 20 faces across a:
+the force against Sneddon's at each step, correctors, wall time) and selfContactStrip at -refine 1, 2 and 4 (the
 force across the slot against CalculiX's at each contact step, its
 error in % of the force; correctors and wall time side by side with the
 same strip as a two-patch pair, roof and floor, on the same mesh).
@@ -1534,7 +1534,7 @@ def rigid_bench():
     punch = importlib.import_module("compareRigidPunch")
     print("%-7s %8s %-22s %8s %7s" % ("refine", "cells", "F/F_Sneddon - 1 [%]", "corr",
                                        "wall s"))
-    for level in ("1", "2"):
+    for level in ("0.67", "1", "1.33"):
         r = bench_case("rigidPunch_%s" % level, tut, allrun=["-refine", level])
         if not r["converged"]:
             print("%-7s did not converge (rc=%d)" % (level, r["rc"]))

@@ -21,21 +21,23 @@ Data, for every written time t:
   - contactPressure of blockTop at the last time (face centres and areas
     from constant/polyMesh), r = sqrt(x^2 + z^2).
 
-Checks (h: the slave face width under the punch, 1 mm at -refine 1, 10
-faces across a; the rim runs through the faces, which are in contact or
-not by their centres):
+Checks (h: the slave face width under the punch, 0.67 mm at -refine 1,
+15 faces across a; the rim runs through the faces, which are in contact
+or not by their centres):
   - force_step<i>: |F - 2 a E* delta| / (2 a E* delta), tolerance F_TOL =
-    3 %. Measured at -refine 1 (lagrangeMultiplier): -2.3 %; the same
-    faces held at -delta by a fixed normal displacement instead of
-    contact give -0.7 % (the contact faces are the cells whose centres lie
-    under the punch; the rest is the staircase of square faces along the
-    rim and the edge singularity on 10 faces).
+    2 % (issue 23's). Measured (lagrangeMultiplier): -0.25 % at -refine 1;
+    +0.40 % at -refine 1.33 (20 faces across a); -2.3 % with 10 faces
+    across a (rigidSphere's block, -refine 0.67), where the same faces
+    held at -delta by a fixed normal displacement instead of contact gave
+    -0.7 %: the contact faces are the cells whose centres lie under the
+    punch, and the square faces' staircase along the rim moves the
+    contact's edge by up to half a face.
   - pressure_rms: the RMS of p - p_Sneddon(r) for the measured F over the
     faces with r < 0.6 a, as a fraction of Sneddon's pressure at the
     centre F/(2 pi a^2), tolerance P_TOL = 3 %. Measured at -refine 1:
-    0.9 % (largest 1.3 %); over r < 0.7 a 1.8 %, over r < 0.8 a 6.3 %
-    (20 % at one face): toward the edge p ~ (a - r)^(-1/2) steepens over
-    a face, and the faces' square staircase along the rim moves it.
+    0.44 % (10 faces across a: 0.9 %, over r < 0.7 a 1.8 %, over r < 0.8 a
+    6.3 %, 20 % at one face): toward the edge p ~ (a - r)^(-1/2) steepens
+    over a face, and the faces' square staircase along the rim moves it.
 """
 import json
 import math
@@ -50,7 +52,7 @@ import numpy as np
 A_PUNCH = 0.01            # punch radius [m], validation/writePunchStl.py
 SLAVE = "blockTop"
 SYMMETRY = 4.0            # the quarter model
-F_TOL = 0.03              # fraction of Sneddon's F, every step
+F_TOL = 0.02              # fraction of Sneddon's F, every step
 P_TOL = 0.03              # RMS over r < 0.8 a, fraction of F/(2 pi a^2)
 R_INNER = 0.6             # the pressure check's radius, of a
 
