@@ -1,7 +1,7 @@
 """rigidPunch: Sneddon's flat-ended rigid punch (a triangulated surface
 with a sharp edge, no mesh) on an elastic block, quarter model, two load
 steps at -refine 1 (15 faces across a): compareRigidPunch.py's checks (F
-against 2 a E* delta within 2 % at every step, measured -0.25 %; the
+against 2 a E* delta within 2 % at every step, measured -0.13 %; the
 pressure under the punch against Sneddon's away from the edge). The force check is what caught the closest point on
 the punch's side for faces that crossed its end near the edge (+15 %,
 growing with the mesh; triSurfaceRigidSurface.H)."""
