@@ -39,7 +39,6 @@ or not by their centres):
     6.3 %, 20 % at one face): toward the edge p ~ (a - r)^(-1/2) steepens
     over a face, and the faces' square staircase along the rim moves it.
 """
-import json
 import math
 import os
 import re
@@ -168,10 +167,8 @@ def main():
               % (s["time"], s["delta"] * 1e3, s["F"], s["FS"], 100 * (s["F"] / s["FS"] - 1),
                  s["nActive"], s["correctors"]))
     if "rms" not in res:
-        report.print_checks(res["checks"])
-        if args.json:
-            with open(args.json, "w") as f:
-                json.dump(res["checks"], f, indent=1)
+        # No plot of a run that did not get that far
+        report.finish(res, args.case, None, args.json, plot)
         return 1
     print("  pressure RMS over r < %.1f a: %.2f %% of F/(2 pi a^2)"
           % (R_INNER, 100 * res["rms"]))

@@ -51,7 +51,6 @@ to 10 mm over the five steps, 4.5 to 10 faces):
 Besides, printed: a and p0 against Hertz at delta (a = sqrt(R delta)) and
 at the measured F, every step.
 """
-import json
 import math
 import os
 import re
@@ -225,10 +224,8 @@ def main():
         print("  face width at a: %.4g mm (a/h = %.1f at the last step)"
               % (res["hA"] * 1e3, res["steps"][-1]["aHF"] / res["hA"]))
     if not res["steps"] or "hA" not in res:
-        report.print_checks(res["checks"])
-        if args.json:
-            with open(args.json, "w") as f:
-                json.dump(res["checks"], f, indent=1)
+        # No plot of a run that did not get that far
+        report.finish(res, args.case, None, args.json, plot)
         return 1
     report.finish(res, args.case, args.png, args.json, plot)
     return 0 if all(c["passed"] for c in res["checks"]) else 1

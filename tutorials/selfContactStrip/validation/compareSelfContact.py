@@ -29,7 +29,6 @@ Checks, every step:
 
 Usage: compareSelfContact.py [case] [--png FILE] [--json FILE]
 """
-import json
 import math
 import os
 import sys
@@ -162,10 +161,8 @@ def main():
               % (s["time"], s["p"]/1e6, s["F"], s["Fref"], rel, 100*s["err"],
                  s["active"], s["stray"], 1e3*s["start"], s["correctors"]))
     if not res["steps"]:
-        report.print_checks(res["checks"])
-        if args.json:
-            with open(args.json, "w") as f:
-                json.dump(res["checks"], f, indent=1)
+        # No plot of a run that did not get that far
+        report.finish(res, args.case, None, args.json, plot)
         return 1
     report.finish(res, args.case, args.png, args.json, plot)
     return 0 if all(c["passed"] for c in res["checks"]) else 1
