@@ -61,6 +61,7 @@ tolerance as the stress; and, when the contactReport function object wrote
 postProcessing/contactReport/*/lowerTop.dat, its last normalForce likewise.
 """
 import os
+import sys
 
 from c4fpost import elastic, foamio, methods, patchtest, report
 
@@ -188,8 +189,8 @@ def main():
     print("%8s %8s %16s" % ("x", "y", "sigma_yy [Pa]"))
     for x, y, s in zip(res["colX"], res["colY"], res["colSyy"]):
         print("%8.4f %8.4f %16.9g" % (x, y, s))
-    report.finish(res, args.case, args.png, args.json, plot)
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -207,8 +207,7 @@ def main():
     if res["kind"] != "exact":
         print("  %s: not an exact method (%s); checked for uniformity only"
               % (res["method"], res["kind"]))
-    report.finish(res, args.case, args.png, args.json, plot)
-    return 0 if all(c["passed"] for c in res["checks"]) else 1
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

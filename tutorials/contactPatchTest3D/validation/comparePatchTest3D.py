@@ -101,6 +101,8 @@ function object wrote postProcessing/contactReport/*/upperBottom.dat, its
 last normalForce likewise.
 """
 
+import sys
+
 from c4fpost import elastic, foamio, patchtest, report
 
 import numpy as np
@@ -297,8 +299,7 @@ def main():
             print("  last step: time %s, %d correctors, residual %.3g%s"
                   % (step["time"], step["correctors"], step["residual"],
                      "" if step["converged"] else ", NOT CONVERGED"))
-        report.finish(res, args.case, None, args.json, plot)
-        return
+        return report.finish(res, args.case, args.png, args.json, plot, complete=False)
     print("%s: sigma' = R^T sigma R over all cells (time %s, %s)"
           % (NAME, res["time"], ("method " + res["method"]) if res["contact"]
              else "no contact: exact state on both contact patches"))
@@ -328,8 +329,8 @@ def main():
     print("%8s %8s %8s %16s" % ("x'", "y'", "z'", "sigma'_zz [Pa]"))
     for x, y, z, s in zip(res["colX"], res["colY"], res["colZ"], res["colSzz"]):
         print("%8.4f %8.4f %8.4f %16.9g" % (x, y, z, s))
-    report.finish(res, args.case, args.png, args.json, plot)
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -51,6 +51,7 @@ The master's contact pressure (the slave's, transferred) is printed, not
 checked.
 """
 import os
+import sys
 
 from c4fpost import elastic, foamio, patchtest, report
 
@@ -206,8 +207,8 @@ def main():
         print("  solver: time %s, %d correctors, residual %.3g%s"
               % (step["time"], step["correctors"], step["residual"],
                  "" if step["converged"] else ", NOT CONVERGED"))
-    report.finish(res, args.case, args.png, args.json, plot)
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -146,8 +146,7 @@ def main():
         if "rel" in res:
             line += "  (CalculiX %+.3f %%)" % (100 * res["rel"][k])
         print(line)
-    report.finish(res, args.case, args.png, args.json, plot)
-    return 0 if all(c["passed"] for c in res["checks"]) else 1
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

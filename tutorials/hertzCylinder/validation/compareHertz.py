@@ -318,7 +318,7 @@ def main():
         print("%10.4f %10.4f %14.6g %14.6g %10.4f %6d"
               % (x[i] * 1e3, x[i] / aRef, p[i] / 1e6, ref[i] / 1e6,
                  (p[i] - ref[i]) / p0Ref, res["active"][i]))
-    report.finish(res, args.case, args.png, args.json, plot)
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

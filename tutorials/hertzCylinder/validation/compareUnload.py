@@ -349,7 +349,7 @@ def main():
         print("  faces separating at t = %s: %d" % (t, len(sep)))
         for (x, _, lam, _) in sep:
             print("    x = %7.4f mm: %s MPa" % (x * 1e3, " ".join("%.3g" % (v / 1e6) for v in lam)))
-    report.finish(res, args.case, args.png, args.json, plot)
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

@@ -203,7 +203,7 @@ def main():
         print("%10.4f %10.4f %14.6g %14.6g %10.4f %6d"
               % (x[i] * 1e3, x[i] / res["aH"], p[i] / 1e6, pH[i] / 1e6,
                  (p[i] - pH[i]) / res["p0H"], res["active"][i]))
-    report.finish(res, args.case, args.png, args.json, plot)
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

@@ -209,7 +209,7 @@ def main():
           % (res["nInner"], RMS_SPAN, 100 * res["rms"]))
     if not 0.07 <= res["aH"] <= 0.13:
         print("  NOTE: a is outside the 0.07-0.13 m the mesh is graded for (DELTA in 0/D)")
-    report.finish(res, args.case, args.png, args.json, plot)
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

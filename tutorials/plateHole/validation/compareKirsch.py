@@ -18,8 +18,8 @@ Tolerance on max |sigma_xx - Kirsch| / (3T) along the line:
     floor, which 0.5 bounds with margin.
   The default mesh (h1/R = 0.082) measures 3.6 % against 6.6 %.
 """
-import json
 import os
+import sys
 
 from c4fpost import foamio, kirsch, report
 
@@ -85,8 +85,8 @@ def main():
     print("%10s %14s %14s %10s" % ("y/R", "sxx [Pa]", "Kirsch [Pa]", "err/3T"))
     for yi, n, k in list(zip(res["y"], res["sxx"], res["kirsch"]))[::3]:
         print("%10.4f %14.6g %14.6g %10.4f" % (yi / R, n, k, abs(n - k) / (3 * T)))
-    report.finish(res, args.case, args.png, args.json, plot)
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -223,12 +223,8 @@ def main():
     if "hA" in res:
         print("  face width at a: %.4g mm (a/h = %.1f at the last step)"
               % (res["hA"] * 1e3, res["steps"][-1]["aHF"] / res["hA"]))
-    if not res["steps"] or "hA" not in res:
-        # No plot of a run that did not get that far
-        report.finish(res, args.case, None, args.json, plot)
-        return 1
-    report.finish(res, args.case, args.png, args.json, plot)
-    return 0 if all(c["passed"] for c in res["checks"]) else 1
+    return report.finish(res, args.case, args.png, args.json, plot,
+                         complete=bool(res["steps"]) and "hA" in res)
 
 
 if __name__ == "__main__":

@@ -160,12 +160,8 @@ def main():
         print("  %-5s %-9.4g %-11.5g %-11.5g %-+8.2f %-9.3f %-6d %-6d %-10.4g %d"
               % (s["time"], s["p"]/1e6, s["F"], s["Fref"], rel, 100*s["err"],
                  s["active"], s["stray"], 1e3*s["start"], s["correctors"]))
-    if not res["steps"]:
-        # No plot of a run that did not get that far
-        report.finish(res, args.case, None, args.json, plot)
-        return 1
-    report.finish(res, args.case, args.png, args.json, plot)
-    return 0 if all(c["passed"] for c in res["checks"]) else 1
+    return report.finish(res, args.case, args.png, args.json, plot,
+                         complete=bool(res["steps"]))
 
 
 if __name__ == "__main__":

@@ -169,8 +169,7 @@ def main():
     for c in res["checks"]:
         if c.get("note"):
             print("  NOTE %s: %s" % (c["name"], c["note"]))
-    report.finish(res, args.case, args.png, args.json, plot)
-    return 0 if all(c["passed"] for c in res["checks"]) else 1
+    return report.finish(res, args.case, args.png, args.json, plot)
 
 
 if __name__ == "__main__":

@@ -28,13 +28,16 @@ def print_checks(checks):
                  c["reference"], c["error"], c["tolerance"]))
 
 
-def finish(res, case, png, json_path, plot):
+def finish(res, case, png, json_path, plot, complete=True):
     """Print the checks of `res`, call plot(res, path) when png is set and
-    write the checks to json_path when it is set."""
+    the run got far enough to plot (`complete`), write the checks to
+    json_path when it is set, and return the script's exit status: 0 when
+    the run is complete and every check passed, 1 otherwise."""
     print_checks(res["checks"])
-    if png:
+    if png and complete:
         plot(res, os.path.join(case, png))
         print("plot: %s" % os.path.join(case, png))
     if json_path:
         with open(json_path, "w") as f:
             json.dump(res["checks"], f, indent=1)
+    return 0 if complete and all(c["passed"] for c in res["checks"]) else 1
