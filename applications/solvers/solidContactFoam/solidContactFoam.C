@@ -58,7 +58,11 @@ Description
     that has not converged, D becomes the combination of the last
     andersonDepth + 1 iterates whose corrector residual is least. The
     history starts afresh with each load step and whenever a contact
-    patch changed its active set. `acceleration none` is the plain
+    patch changed its active set. With `andersonRestartGrowth g` it also
+    starts afresh when an accelerated corrector's residual |G(x) - x| is
+    more than g times the one before (the secants described a map that is
+    no longer there: a face at a sharp master corner that switched
+    between two positions). `acceleration none` is the plain
     iteration. Measured at tolerance 1e-9: plateHole 36 correctors
     instead of 204, hertzCylinder 50 (LM) instead of 305; make bench
     prints the table.
@@ -102,6 +106,7 @@ Usage
         onNonConvergence | stop or continue                    | no       | stop
         acceleration  | anderson or none                       | no       | anderson
         andersonDepth | difference columns kept (>= 1)         | no       | 15
+        andersonRestartGrowth | restart when a step grows the residual by more (>= 1) | no | never
         nonlinearGeometry | finite deformation (total Lagrangian) | no | no
     \endtable
 

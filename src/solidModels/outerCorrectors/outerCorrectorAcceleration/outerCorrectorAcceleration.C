@@ -187,6 +187,28 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
             << exit(FatalIOError);
     }
 
+    // A restart when an accelerated step made the residual grow by more
+    // than this factor (none by default)
+    if (solidControls.found("andersonRestartGrowth"))
+    {
+        p.restartGrowth =
+            solidControls.get<scalar>("andersonRestartGrowth");
+        try
+        {
+            c4f::coupling::AndersonAcceleration::check(p);
+        }
+        catch (const std::invalid_argument&)
+        {
+            FatalIOErrorInFunction(solidControls)
+                << "Entry 'andersonRestartGrowth' = " << p.restartGrowth
+                << " in " << solidControls.name() << " is invalid: it must"
+                << " be a number >= 1 (the history is cleared when an"
+                << " accelerated corrector's residual exceeds that factor"
+                << " times the one before; absent: never)"
+                << exit(FatalIOError);
+        }
+    }
+
     if (accelerationNames[typeName] == accelerationType::none)
     {
         return;
