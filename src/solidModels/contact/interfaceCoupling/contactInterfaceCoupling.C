@@ -4,6 +4,7 @@
 
 #include "contactInterfaceCoupling.H"
 #include "processorSum.H"
+#include "solidPatchTractions.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -96,11 +97,17 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     nMaster_ = pair_.nMasterFaces();
     normal_ = in.normal;
     const vectorField& ns = pair_.slaveNormals();
+    // The tie against sliding only under finite deformation: there the
+    // sliding of curved surfaces moves the gap at first order
+    const bool tieSliding =
+        solidPatchTractions::finiteDeformation(slave.boundaryMesh().mesh());
     minWeight_.setSize(slave.size());
     forAll(minWeight_, i)
     {
         minWeight_[i] =
-            mag(ns[i] + normal_[i]) > parallelTol_ ? minImplicitWeight_ : 0;
+            tieSliding && mag(ns[i] + normal_[i]) > parallelTol_
+          ? minImplicitWeight_
+          : 0;
     }
     explicitForce_.setSize(slave.size());
     tied_.setSize(slave.size());
