@@ -4,8 +4,11 @@ decomposed in every layout of tests/decompositions.py (scotch on 2, 3 and
 face on one processor, every master face on one processor, a third
 processor without any contact face, a processor holding one face of
 each patch), and each decomposed run's D equal to the serial run's to
-1e-8 of max |D| (both stop at the outer correctors' residual 1e-9;
-measured at most 6.3e-9 on hertzCylinder, 1.2e-10 on the others). With
+1e-8 of max |D|. Both stop at the outer correctors' residual, 1e-9 in
+the tutorials, which left hertzCylinder's runs up to 1.04e-8 apart (scotch
+on 3 processors; 8.8e-9 with a third processor without contact faces):
+that is the tolerance's reach, not the decomposition's, so hertzCylinder
+runs here to 1e-11. The others stop at 1e-9 (1.2e-10 apart). With
 friction (slidingBlock with coulomb, the stick patch test with stick:
 3.5e-11) the slave's stick flags are the serial run's too. Before, 3 or 4 processors of hertzCylinder crashed
 (MPI_ERR_TRUNCATE) or hung: the mesh-quality check reduced once per
@@ -24,20 +27,23 @@ LM = runs.LM
 TOL = 1e-8
 LAYOUTS = ("scotch2", "scotch3", "scotch4", "simpleCut2", "simpleCut4", "slaveOnOne",
            "masterOnOne", "noContactFace3", "oneFaceEach")
-CASES = (("hertzCylinder", ["-method", LM]),
-         ("contactPatchTest3D", ["-method", LM, "-rotate"]),
-         ("slidingBlock", ["-method", LM, "-friction", "coulomb"]),
-         ("contactPatchTest", ["-method", LM, "-friction", "stick", "-shear", "one"]))
+# (tutorial, Allrun arguments, outer tolerance or None for the tutorial's)
+CASES = (("hertzCylinder", ["-method", LM], "1e-11"),
+         ("contactPatchTest3D", ["-method", LM, "-rotate"], None),
+         ("slidingBlock", ["-method", LM, "-friction", "coulomb"], None),
+         ("contactPatchTest", ["-method", LM, "-friction", "stick", "-shear", "one"], None))
 
 
 # One xdist group: the sweeps take turns, so that at most one run of up to
 # 4 processes shares the 2 cores with the other worker's run
-@pytest.mark.parametrize("tutorial,args", [pytest.param(
-    t, a, marks=pytest.mark.xdist_group("decompositions"), id=t) for t, a in CASES])
-def test_every_decomposition_equals_serial(tutorial, args):
+@pytest.mark.parametrize("tutorial,args,tolerance", [pytest.param(
+    t, a, tol, marks=pytest.mark.xdist_group("decompositions"), id=t) for t, a, tol in CASES])
+def test_every_decomposition_equals_serial(tutorial, args, tolerance):
     ck = harness.Checks()
     name = "%s_decompositions" % tutorial
-    serial = harness.tutorial_run(tutorial, name, args)
+    serial = harness.tutorial_run(
+        tutorial, name, args,
+        edit=(lambda case: harness.set_solid_tolerance(case, tolerance)) if tolerance else None)
     if not ck.run(serial, name):
         ck.verify()
     ref = serial["case"]
