@@ -173,26 +173,12 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
     // 10, 50 with 15, 20 or 30 (plateHole 43, 38, 36, 36, 36); each column
     // holds two state vectors
     c4f::coupling::AndersonParameters p;
-    p.depth = solidControls.getOrDefault<label>("andersonDepth", 15);
-    try
-    {
-        c4f::coupling::AndersonAcceleration::check(p);
-    }
-    catch (const std::invalid_argument&)
-    {
-        FatalIOErrorInFunction(solidControls)
-            << "Entry 'andersonDepth' = " << p.depth << " in "
-            << solidControls.name() << " is invalid: it must be an integer"
-            << " >= 1 (the difference columns kept; 15 by default)"
-            << exit(FatalIOError);
-    }
 
-    // A restart when an accelerated step made the residual grow by more
-    // than this factor (none by default)
-    if (solidControls.found("andersonRestartGrowth"))
+    // The kernel's own check of the parameters, reported against the
+    // entry just read
+    const auto checkEntry =
+        [&](const word& entry, const string& value, const char* valid)
     {
-        p.restartGrowth =
-            solidControls.get<scalar>("andersonRestartGrowth");
         try
         {
             c4f::coupling::AndersonAcceleration::check(p);
@@ -200,13 +186,35 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
         catch (const std::invalid_argument&)
         {
             FatalIOErrorInFunction(solidControls)
-                << "Entry 'andersonRestartGrowth' = " << p.restartGrowth
-                << " in " << solidControls.name() << " is invalid: it must"
-                << " be a number >= 1 (the history is cleared when an"
-                << " accelerated corrector's residual exceeds that factor"
-                << " times the one before; absent: never)"
+                << "Entry '" << entry << "' = " << value.c_str() << " in "
+                << solidControls.name() << " is invalid: " << valid
                 << exit(FatalIOError);
         }
+    };
+
+    p.depth = solidControls.getOrDefault<label>("andersonDepth", 15);
+    checkEntry
+    (
+        "andersonDepth",
+        Foam::name(p.depth),
+        "it must be an integer >= 1 (the difference columns kept; 15 by"
+        " default)"
+    );
+
+    // A restart when an accelerated step made the residual grow by more
+    // than this factor (none by default)
+    if (solidControls.found("andersonRestartGrowth"))
+    {
+        p.restartGrowth =
+            solidControls.get<scalar>("andersonRestartGrowth");
+        checkEntry
+        (
+            "andersonRestartGrowth",
+            Foam::name(p.restartGrowth),
+            "it must be a number >= 1 (the history is cleared when an"
+            " accelerated corrector's residual exceeds that factor times"
+            " the one before; absent: never)"
+        );
     }
 
     if (accelerationNames[typeName] == accelerationType::none)
