@@ -15,7 +15,16 @@ The contact pressure the solver writes is per current area: -sigma'_zz on
 every slave face.
 
 The tutorials' scripts keep the case's constants and tolerances; this
-module builds the checks (c4fpost.report's dicts) and the plot.
+module builds the checks (c4fpost.report's dicts) and the plot:
+  - the step converged (outer residual below solidMechanics' tolerance);
+  - exact methods (answer=exact in solidContactFoam -listMethods): in
+    every cell |sigma'_zz/sigma_exact - 1| <= exact_tol and D' within
+    exact_tol Delta of the exact field; every slave face's pressure within
+    exact_tol of -sigma_exact;
+  - the penalty family (a spring in series: uniform with an offset):
+    (max - min) sigma'_zz/|sigma_exact| <= exact_tol, the offset printed;
+  - every method: the other components of sigma' at most exact_tol
+    |sigma_exact| in every cell (uniaxial).
 """
 import os
 
