@@ -144,6 +144,7 @@ Usage
 #include "frictionModel.H"
 #include "contactFvMesh.H"
 #include "outerCorrectorAcceleration.H"
+#include "newtonKrylovCorrector.H"
 #include "solidMeshQuality.H"
 #include "checkAdmissible.H"
 #include "zeroGradientFvPatchFields.H"
@@ -218,6 +219,57 @@ int main(int argc, char *argv[])
     // Anderson acceleration of the outer correctors, or none
     outerCorrectorAcceleration acceleration(solidControls, D);
 
+    // Or Newton-Krylov on the correctors (algorithm newtonKrylov)
+    const bool newton = newtonKrylovCorrector::selected(solidControls);
+    newtonKrylovCorrector newtonLoop(solidControls, D);
+
+    // The stress of the current D (grad D, sigma; P under finite
+    // deformation), which the next assembly's explicit part takes
+    const auto updateStress = [&]()
+    {
+        gradD = interfaces.grad(D, explicitStress(), impK);
+        if (nonlinearGeometry)
+        {
+            const tmp<volTensorField> P(mech.law().firstPiola(gradD));
+            stressFluxPtr() = P().T();
+            sigma = finiteStrainFields::cauchy(P(), gradD);
+        }
+        else
+        {
+            sigma = mech.law().sigma(gradD);
+        }
+    };
+
+    // Assemble the D equation (the boundary conditions, the contact ones
+    // among them, updated from D) and solve it: the solver's controls, or
+    // Newton-Krylov's fixed cycles
+    const auto solveD = [&]() -> SolverPerformance<vector>
+    {
+        fvVectorMatrix DEqn
+        (
+            fvm::laplacian(impKf, D, "laplacian(DD,D)")
+          + fvc::div
+            (
+                mesh.Sf()
+              & interfaces.interpolateExplicit(explicitStress(), impK)
+            )
+        );
+
+        DEqn.relax();
+
+        const SolverPerformance<vector> perf =
+            newton
+          ? DEqn.solve
+            (
+                newtonLoop.solverControls(mesh.solverDict(D.name()))
+            )
+          : DEqn.solve();
+
+        D.relax();
+
+        return perf;
+    };
+
     // Scalings of one update a step limit may ask for (each is measured
     // anew; with gaps linear along the update one suffices)
     const label maxStepLimits = 30;
@@ -233,25 +285,18 @@ int main(int argc, char *argv[])
         bool multipliersExhausted = false;
 
         acceleration.reset();
+        newtonLoop.reset();
 
         do
         {
             D.storePrevIter();
             acceleration.storeIterate();
+            if (newton)
+            {
+                newtonLoop.storeIterate();
+            }
 
-            fvVectorMatrix DEqn
-            (
-                fvm::laplacian(impKf, D, "laplacian(DD,D)")
-              + fvc::div
-                (
-                    mesh.Sf()
-                  & interfaces.interpolateExplicit(explicitStress(), impK)
-                )
-            );
-
-            DEqn.relax();
-
-            const SolverPerformance<vector> perf = DEqn.solve();
+            const SolverPerformance<vector> perf = solveD();
             const label nLinear = cmptSum(perf.nIterations());
             nLinearStep += nLinear;
 
@@ -269,8 +314,6 @@ int main(int argc, char *argv[])
                 }
             }
 
-            D.relax();
-
             ++nCorr;
 
             // The contact state entered this solve through the boundary
@@ -283,7 +326,14 @@ int main(int argc, char *argv[])
             if (converged)
             {
                 // A converged step keeps the state the test was made at
-                acceleration.accept();
+                if (newton)
+                {
+                    newtonLoop.accept();
+                }
+                else
+                {
+                    acceleration.accept();
+                }
 
                 // Methods with stored multipliers update them now; while
                 // they move the step goes on from this state, with a new
@@ -292,12 +342,30 @@ int main(int argc, char *argv[])
                 {
                     converged = false;
                     acceleration.reset();
+                    newtonLoop.restart();
                 }
                 else if (!contactStateReporter::multipliersConverged(D))
                 {
                     converged = false;
                     multipliersExhausted = true;
                 }
+            }
+            else if (newton)
+            {
+                // The next iterate is x + d of a Newton step (or a shorter
+                // trial along the last one), each product one corrector
+                newtonLoop.step
+                (
+                    contactStateReporter::activeSetChanged(D),
+                    [&]() -> label
+                    {
+                        updateStress();
+                        const label n = cmptSum(solveD().nIterations());
+                        nLinearStep += n;
+                        return n;
+                    }
+                );
+                nCorr += newtonLoop.lastProducts();
             }
             else
             {
@@ -333,24 +401,20 @@ int main(int argc, char *argv[])
                 acceleration.scaleStep(alpha);
             }
 
-            gradD = interfaces.grad(D, explicitStress(), impK);
-            if (nonlinearGeometry)
-            {
-                const tmp<volTensorField> P(mech.law().firstPiola(gradD));
-                stressFluxPtr() = P().T();
-                sigma = finiteStrainFields::cauchy(P(), gradD);
-            }
-            else
-            {
-                sigma = mech.law().sigma(gradD);
-            }
+            updateStress();
 
             if (verbose)
             {
                 Info<< "    corrector " << nCorr
                     << "  residual = " << residual
                     << "  linear iterations = " << nLinear;
-                if (acceleration.active())
+                if (newton)
+                {
+                    Info<< "  products = " << newtonLoop.lastProducts()
+                        << "  krylov residual = "
+                        << newtonLoop.lastKrylovResidual();
+                }
+                else if (acceleration.active())
                 {
                     Info<< "  |G(x) - x| = " << acceleration.residualNorm()
                         << "  columns = " << acceleration.nColumns();
@@ -378,6 +442,13 @@ int main(int argc, char *argv[])
             << (converged ? "" : "  NOT CONVERGED")
             << contactSummary.c_str()
             << endl;
+        if (newton)
+        {
+            Info<< "    newtonKrylov: " << newtonLoop.nNewton()
+                << " Newton steps, " << newtonLoop.nProducts()
+                << " products, " << newtonLoop.nKrylovFailures()
+                << " GMRES solves unconverged" << endl;
+        }
         Info<< "    linear solver: " << nLinearStep << " iterations over the"
             << " components, " << scalar(nLinearStep)/max(nCorr, 1)
             << " per corrector" << endl;

@@ -161,4 +161,34 @@ Foam::List<Foam::scalarField*> Foam::contactStateReporter::acceleratedStates
 }
 
 
+void Foam::contactStateReporter::saveCorrectorStates(volVectorField& D)
+{
+    forEachReporter<contactStateReporter>
+    (
+        D.boundaryFieldRef(),
+        [](contactStateReporter& rep, const label)
+        {
+            rep.saveCorrectorState();
+        }
+    );
+}
+
+
+void Foam::contactStateReporter::restoreCorrectorStates
+(
+    volVectorField& D,
+    const bool frozen
+)
+{
+    forEachReporter<contactStateReporter>
+    (
+        D.boundaryFieldRef(),
+        [frozen](contactStateReporter& rep, const label)
+        {
+            rep.restoreCorrectorState(frozen);
+        }
+    );
+}
+
+
 // ************************************************************************* //

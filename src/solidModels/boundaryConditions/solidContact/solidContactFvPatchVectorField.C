@@ -343,6 +343,32 @@ Foam::solidContactFvPatchVectorField::gradientBoundaryCoeffs() const
 }
 
 
+void Foam::solidContactFvPatchVectorField::saveCorrectorState()
+{
+    history_.saveCorrector();
+    savedValue_ = *this;
+    savedGradient_ = gradient();
+    savedGradInternal_ = gradInternal_;
+    savedGradBoundary_ = gradBoundary_;
+}
+
+
+void Foam::solidContactFvPatchVectorField::restoreCorrectorState
+(
+    const bool frozen
+)
+{
+    history_.restoreCorrector(frozen);
+    if (savedValue_.size() == size())
+    {
+        vectorField::operator=(savedValue_);
+        gradient() = savedGradient_;
+        gradInternal_ = savedGradInternal_;
+        gradBoundary_ = savedGradBoundary_;
+    }
+}
+
+
 Foam::scalarField* Foam::solidContactFvPatchVectorField::acceleratedState
 (
     scalarField& scale

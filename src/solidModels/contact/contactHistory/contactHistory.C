@@ -264,3 +264,34 @@ void Foam::contactHistory::write(Ostream& os) const
 
 
 // ************************************************************************* //
+
+
+void Foam::contactHistory::saveCorrector()
+{
+    snapshot_.reset(new correctorSnapshot(fields_));
+    snapshot_->explicitTraction = explicitTraction_;
+    snapshot_->cond = cond_;
+    if (slave())
+    {
+        snapshot_->method.reset(new contactFaceState(method_->state()));
+        snapshot_->friction.reset(new contactFaceState(friction_->state()));
+    }
+}
+
+
+void Foam::contactHistory::restoreCorrector(const bool frozen)
+{
+    if (!snapshot_.valid())
+    {
+        return;
+    }
+    fields_ = snapshot_->fields;
+    explicitTraction_ = snapshot_->explicitTraction;
+    cond_ = snapshot_->cond;
+    cond_.frozen = frozen;
+    if (slave())
+    {
+        method_->state() = snapshot_->method();
+        friction_->state() = snapshot_->friction();
+    }
+}

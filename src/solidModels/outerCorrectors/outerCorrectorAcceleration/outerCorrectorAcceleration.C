@@ -5,8 +5,6 @@
 #include "outerCorrectorAcceleration.H"
 #include "processorSum.H"
 #include "Enum.H"
-#include "fixedGradientFvPatchFields.H"
-#include "contactStateReporter.H"
 
 #include <stdexcept>
 
@@ -27,122 +25,6 @@ const Foam::Enum<accelerationType> accelerationNames
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::outerCorrectorAcceleration::gather(std::vector<double>& x) const
-{
-    x.clear();
-    for (const vector& v : D_.primitiveField())
-    {
-        x.insert(x.end(), v.cdata(), v.cdata() + vector::nComponents);
-    }
-    for (const fvPatchVectorField& pf : D_.boundaryField())
-    {
-        if (!pf.coupled())
-        {
-            for (const vector& v : pf)
-            {
-                x.insert(x.end(), v.cdata(), v.cdata() + vector::nComponents);
-            }
-        }
-    }
-    // A contact method's multipliers updated in every corrector, each
-    // divided by its scale (a stiffness) into a length like D's
-    List<scalarField> scales;
-    const List<scalarField*> states
-    (
-        contactStateReporter::acceleratedStates(D_, scales)
-    );
-    forAll(states, k)
-    {
-        forAll(*states[k], facei)
-        {
-            x.push_back((*states[k])[facei]/scales[k][facei]);
-        }
-    }
-}
-
-
-void Foam::outerCorrectorAcceleration::scatter(const std::vector<double>& x)
-{
-    std::size_t i = 0;
-    for (vector& v : D_.primitiveFieldRef())
-    {
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            v[d] = x[i++];
-        }
-    }
-
-    // Coupled patches take the neighbours' new cells. Only they are
-    // evaluated: evaluate() on a condition whose coefficients are not
-    // current would run its update (a contact update) once more
-    volVectorField::Boundary& bf = D_.boundaryFieldRef();
-    // (all sends before all receives: a schedule is not needed)
-    const Pstream::commsTypes comms =
-        Pstream::defaultCommsType == Pstream::commsTypes::nonBlocking
-      ? Pstream::commsTypes::nonBlocking
-      : Pstream::commsTypes::blocking;
-    for (fvPatchVectorField& pf : bf)
-    {
-        if (pf.coupled())
-        {
-            pf.initEvaluate(comms);
-        }
-    }
-    if (comms == Pstream::commsTypes::nonBlocking)
-    {
-        Pstream::waitRequests();
-    }
-    for (fvPatchVectorField& pf : bf)
-    {
-        if (pf.coupled())
-        {
-            pf.evaluate(comms);
-        }
-    }
-
-    for (fvPatchVectorField& pf : bf)
-    {
-        if (!pf.coupled())
-        {
-            vectorField v(pf.size());
-            for (vector& vi : v)
-            {
-                for (direction d = 0; d < vector::nComponents; ++d)
-                {
-                    vi[d] = x[i++];
-                }
-            }
-            if (isA<fixedGradientFvPatchVectorField>(pf))
-            {
-                // The gradient is the condition's state between correctors
-                // (grad D takes its boundary normal part from it): it goes
-                // with the face value, or the previous iterate's would stay
-                fixedGradientFvPatchVectorField& fg =
-                    refCast<fixedGradientFvPatchVectorField>(pf);
-                fg.gradient() =
-                    (v - fg.patchInternalField())*fg.patch().deltaCoeffs();
-            }
-            pf == v;
-        }
-    }
-
-    List<scalarField> scales;
-    const List<scalarField*> states
-    (
-        contactStateReporter::acceleratedStates(D_, scales)
-    );
-    forAll(states, k)
-    {
-        forAll(*states[k], facei)
-        {
-            (*states[k])[facei] = x[i++]*scales[k][facei];
-        }
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
@@ -151,7 +33,7 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
     volVectorField& D
 )
 :
-    D_(D),
+    state_(D),
     anderson_()
 {
     const word typeName
@@ -247,7 +129,7 @@ void Foam::outerCorrectorAcceleration::reset()
 void Foam::outerCorrectorAcceleration::storeIterate()
 {
     // Also without acceleration: a limited step goes back towards x
-    gather(x_);
+    state_.gather(x_);
 }
 
 
@@ -265,9 +147,9 @@ void Foam::outerCorrectorAcceleration::accelerate(const bool restart)
         return;
     }
 
-    gather(g_);
+    state_.gather(g_);
     anderson_->update(x_, g_, xNext_);
-    scatter(xNext_);
+    state_.scatter(xNext_);
 }
 
 
@@ -275,18 +157,18 @@ void Foam::outerCorrectorAcceleration::accept()
 {
     if (anderson_)
     {
-        scatter(x_);
+        state_.scatter(x_);
     }
 }
 
 
 void Foam::outerCorrectorAcceleration::scaleStep(const scalar alpha)
 {
-    gather(g_);
+    state_.gather(g_);
     xNext_.resize(x_.size());
     for (std::size_t i = 0; i < x_.size(); ++i)
     {
         xNext_[i] = x_[i] + alpha*(g_[i] - x_[i]);
     }
-    scatter(xNext_);
+    state_.scatter(xNext_);
 }

@@ -133,7 +133,7 @@ void Foam::contactMethods::crossConstraint::correct
                 const c4f::contact::LinearizedNormalLaw lin =
                     c4f::contact::linearizeNormalLaw(v, g);
 
-                active = v.pressure > release*l;
+                active = cond.decide(facei, v.pressure > release*l);
                 if (active && lin.coupled)
                 {
                     cond.coupled[facei] = true;

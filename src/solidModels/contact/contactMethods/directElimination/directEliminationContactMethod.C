@@ -63,14 +63,17 @@ void Foam::contactMethods::directElimination::correct
 
     forAll(state.constraintGap, facei)
     {
-        const bool active =
+        const bool active = cond.decide
+        (
+            facei,
             state.inRange[facei]
          && c4f::contact::directEliminationActive
             (
                 cond.active[facei],
                 state.reaction[facei],
                 state.constraintGap[facei]
-            );
+            )
+        );
 
         cond.pressure[facei] = carriedPressure(state, cond, facei);
         cond.setActive(facei, active);

@@ -66,12 +66,15 @@ void Foam::contactMethods::lagrangeMultiplier::correct
 
         const scalar c = activeSetScale_*state.pairStiffness[facei];
 
-        const bool active =
+        const bool active = cond.decide
+        (
+            facei,
             state.inRange[facei]
          && c4f::contact::activeByPrimalDual
             (
                 lambda, state.constraintGap[facei], c
-            );
+            )
+        );
 
         cond.setActive(facei, active);
 

@@ -99,13 +99,21 @@ void Foam::frictionModels::coulomb::correct
          && state_["contactStick"][facei] == 0
          && r.bound > 0
          && r.trial.norm() > (1 - edgeTolerance_)*r.bound;
-        if (onEdge)
+        // Within a Newton step a face keeps its stick or slip
+        const scalar stickBefore = state_["contactStick"][facei];
+        const bool frozenSlip = cond.frozen && stickBefore == 0;
+        const bool frozenStick = cond.frozen && stickBefore == 1;
+        if ((onEdge || frozenSlip) && !r.slip)
         {
+            // The return map's traction on the cone's edge
+            const scalar t = r.trial.norm();
             cond.tangentialTraction[facei] =
-                c4fConvert::toFoam(r.bound*r.trial.normalized());
+                t > 0
+              ? c4fConvert::toFoam(Eigen::Vector3d(r.bound*r.trial/t))
+              : vector::zero;
             setStick(facei, 0, cond);
         }
-        else if (r.slip)
+        else if (r.slip && !frozenStick)
         {
             cond.tangentialTraction[facei] = c4fConvert::toFoam(r.traction);
             setStick(facei, 0, cond);

@@ -1,0 +1,319 @@
+/*---------------------------------------------------------------------------*\
+  contact4foam: computational contact mechanics for finite-volume solids
+\*---------------------------------------------------------------------------*/
+
+#include "newtonKrylovCorrector.H"
+#include "processorSum.H"
+#include "contactStateReporter.H"
+#include "Enum.H"
+
+#include <cmath>
+#include <stdexcept>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+enum class algorithmType { segregated, newtonKrylov };
+
+const Foam::Enum<algorithmType> algorithmNames
+({
+    { algorithmType::segregated, "segregated" },
+    { algorithmType::newtonKrylov, "newtonKrylov" }
+});
+
+
+double globalNorm(const std::vector<double>& v)
+{
+    double s = 0;
+    for (const double vi : v)
+    {
+        s += vi*vi;
+    }
+    Foam::reduce(s, Foam::sumOp<double>());
+    return std::sqrt(s);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
+
+bool Foam::newtonKrylovCorrector::selected(const dictionary& solidControls)
+{
+    const word name
+    (
+        solidControls.getOrDefault<word>("algorithm", "segregated")
+    );
+    if (!algorithmNames.found(name))
+    {
+        FatalIOErrorInFunction(solidControls)
+            << "Entry 'algorithm' = " << name << " in "
+            << solidControls.name() << " is invalid: valid are "
+            << "segregated (the default: outer correctors, accelerated"
+            << " as 'acceleration' says) and newtonKrylov (Jacobian-free"
+            << " Newton-Krylov on the correctors)"
+            << exit(FatalIOError);
+    }
+    return algorithmNames[name] == algorithmType::newtonKrylov;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::newtonKrylovCorrector::newtonKrylovCorrector
+(
+    const dictionary& solidControls,
+    volVectorField& D
+)
+:
+    D_(D),
+    state_(D),
+    gmres_(),
+    linearIterations_(2),
+    fdStep_(1e-7),
+    maxBacktracks_(4),
+    backtrackOnChange_(true),
+    normBase_(0),
+    alpha_(1),
+    nBacktracks_(0),
+    nNewton_(0),
+    nProducts_(0),
+    nKrylovFailures_(0),
+    lastProducts_(0),
+    lastKrylovResidual_(0)
+{
+    const dictionary& coeffs =
+        solidControls.optionalSubDict("newtonKrylovCoeffs");
+
+    const auto bad = [&](const word& entry, const string& value, const char* valid)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry '" << entry << "' = " << value.c_str() << " in "
+            << coeffs.name() << " is invalid: " << valid
+            << exit(FatalIOError);
+    };
+
+    linearIterations_ = coeffs.getOrDefault<label>("linearIterations", 2);
+    if (linearIterations_ < 1)
+    {
+        bad
+        (
+            "linearIterations", Foam::name(linearIterations_),
+            "it must be an integer >= 1 (the GAMG cycles of every"
+            " corrector's solve; 2 by default)"
+        );
+    }
+
+    c4f::coupling::GmresParameters p;
+    p.relativeTolerance = coeffs.getOrDefault<scalar>("krylovTolerance", 1e-2);
+    p.maxIterations = coeffs.getOrDefault<label>("maxKrylov", 100);
+    try
+    {
+        c4f::coupling::Gmres::check(p);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        const bool tol = !(p.relativeTolerance > 0 && p.relativeTolerance < 1);
+        bad
+        (
+            tol ? "krylovTolerance" : "maxKrylov",
+            tol ? Foam::name(p.relativeTolerance) : Foam::name(p.maxIterations),
+            tol
+          ? "it must lie in (0, 1) (GMRES's relative tolerance of each"
+            " Newton correction; 0.01 by default)"
+          : "it must be an integer >= 1 (the products, each one corrector,"
+            " of a Newton step; 100 by default)"
+        );
+    }
+
+    fdStep_ = coeffs.getOrDefault<scalar>("finiteDifferenceStep", 1e-7);
+    if (!(fdStep_ > 0 && fdStep_ < 1e-2))
+    {
+        bad
+        (
+            "finiteDifferenceStep", Foam::name(fdStep_),
+            "it must lie in (0, 0.01) (the finite-difference step relative"
+            " to |x|; 1e-7 by default)"
+        );
+    }
+
+    maxBacktracks_ = coeffs.getOrDefault<label>("maxBacktracks", 4);
+    if (maxBacktracks_ < 0)
+    {
+        bad
+        (
+            "maxBacktracks", Foam::name(maxBacktracks_),
+            "it must be an integer >= 0 (the line search's halvings; 4 by"
+            " default)"
+        );
+    }
+
+    backtrackOnChange_ =
+        coeffs.getOrDefault<bool>("backtrackOnChange", true);
+
+    gmres_.reset(new c4f::coupling::Gmres(p, processorSumReduction()));
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::dictionary Foam::newtonKrylovCorrector::solverControls
+(
+    const dictionary& userControls
+) const
+{
+    dictionary d(userControls);
+    d.set("tolerance", 0.0);
+    d.set("relTol", 0.0);
+    d.set("maxIter", linearIterations_);
+    d.set("minIter", linearIterations_);
+    // GAMG's scaling of each coarse correction is a ratio of inner products
+    // of the residual: a nonlinear map, whose finite differences are not
+    // the products of one linear preconditioner (plateHole, krylovTolerance
+    // 1e-6: six Newton steps with it, two without). The coarsest level's
+    // Krylov solve runs to round-off with the zero tolerances above, which
+    // is linear to round-off (LU there does not take the contact
+    // interface)
+    d.set("scaleCorrection", false);
+    return d;
+}
+
+
+void Foam::newtonKrylovCorrector::reset()
+{
+    xBase_.clear();
+    dBase_.clear();
+    normBase_ = 0;
+    alpha_ = 1;
+    nBacktracks_ = 0;
+    nNewton_ = 0;
+    nProducts_ = 0;
+    nKrylovFailures_ = 0;
+    lastProducts_ = 0;
+    lastKrylovResidual_ = 0;
+}
+
+
+void Foam::newtonKrylovCorrector::storeIterate()
+{
+    state_.gather(x_);
+}
+
+
+void Foam::newtonKrylovCorrector::step
+(
+    const bool changed,
+    const std::function<label()>& corrector
+)
+{
+    lastProducts_ = 0;
+
+    state_.gather(g_);
+    const std::size_t n = x_.size();
+    F_.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        F_[i] = g_[i] - x_[i];
+    }
+    const scalar normF = globalNorm(F_);
+
+    // Line search along the last correction: only while G stays on the
+    // same piece (a new active set makes |F| incomparable)
+    if
+    (
+        (!changed || backtrackOnChange_)
+     && !dBase_.empty()
+     && nBacktracks_ < maxBacktracks_
+     && !(normF <= (1 - 1e-4*alpha_)*normBase_)
+    )
+    {
+        ++nBacktracks_;
+        alpha_ *= 0.5;
+        contactStateReporter::restoreCorrectorStates(D_, false);
+        xp_.resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            xp_[i] = xBase_[i] + alpha_*dBase_[i];
+        }
+        state_.scatter(xp_);
+        return;
+    }
+
+    // A Newton step from x with the decisions its corrector took
+    ++nNewton_;
+    contactStateReporter::saveCorrectorStates(D_);
+
+    // G(x) once more from the state every product starts from: a
+    // corrector also depends on what the one before left besides x (the
+    // contact faces' values and coefficients), and a difference of two
+    // correctors from different such states would not vanish with eps
+    // (finiteStrainPatchTest: without it, a 'converged' state 2 off in
+    // sigma_yy)
+    contactStateReporter::restoreCorrectorStates(D_, true);
+    state_.scatter(x_);
+    corrector();
+    ++lastProducts_;
+    state_.gather(g_);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        F_[i] = g_[i] - x_[i];
+    }
+
+    const scalar xNorm = globalNorm(x_);
+    const scalar eps = fdStep_*max(max(xNorm, globalNorm(F_)), VSMALL);
+
+    const c4f::coupling::Gmres::Operator product =
+        [&](const std::vector<double>& v, std::vector<double>& y)
+        {
+            contactStateReporter::restoreCorrectorStates(D_, true);
+            xp_.resize(n);
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                xp_[i] = x_[i] + eps*v[i];
+            }
+            state_.scatter(xp_);
+            corrector();
+            state_.gather(gp_);
+            ++lastProducts_;
+            y.resize(n);
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                y[i] = v[i] - (gp_[i] - g_[i])/eps;
+            }
+        };
+
+    std::vector<double> d;
+    const c4f::coupling::GmresResult r = gmres_->solve(product, F_, d);
+    nProducts_ += lastProducts_;
+    lastKrylovResidual_ = r.residualNorm/max(r.initialNorm, VSMALL);
+    if (!r.converged)
+    {
+        ++nKrylovFailures_;
+    }
+
+    // The next corrector starts from this step's decisions at x + d and
+    // takes its own
+    contactStateReporter::restoreCorrectorStates(D_, false);
+    xBase_ = x_;
+    dBase_ = std::move(d);
+    normBase_ = normF;
+    alpha_ = 1;
+    nBacktracks_ = 0;
+    xp_.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        xp_[i] = xBase_[i] + dBase_[i];
+    }
+    state_.scatter(xp_);
+}
+
+
+void Foam::newtonKrylovCorrector::accept()
+{
+    state_.scatter(x_);
+}
+
+
+// ************************************************************************* //
