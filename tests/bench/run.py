@@ -96,6 +96,17 @@ cells, serial and on 2 processors: wall time per corrector, linear
 iterations, the contact update's share, memory per process, the master
 faces each processor holds, the strong-scaling efficiency; big.md.
 
+Newton-Krylov against Anderson (`run.py --only newton`, issue 26): each
+case run with the segregated, Anderson-accelerated loop (the tutorial's
+settings) and with `-algorithm newtonKrylov`, one after the other:
+correctors (for Newton, every product is one), Newton steps per load
+step (mean and largest), linear iterations, wall time per load step and
+its ratio, and the normal force's relative difference between the two;
+hertzCylinder at -refine 1 and 2, the same with nu = 0.49 in both bodies,
+hertzSphere, hertzSphereTets, contactPatchTest, finiteStrainPatchTest and
+shallowIroning (whose forces at t = 1.5 are printed too); markdown in
+newton.md.
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
@@ -1573,6 +1584,83 @@ def rigid_bench():
             "%.2f" % (r["wall"] / two["wall"]) if two["converged"] else "-"))
 
 
+def set_nu(nu):
+    """An edit that sets nu in every material of constant/materials."""
+    def edit(case):
+        d = os.path.join(case, "constant", "materials")
+        for f in os.listdir(d):
+            path = os.path.join(d, f)
+            text = open(path).read()
+            open(path, "w").write(re.sub(r"^(\s*nu\s+)[^;]*;", r"\g<1>%s;" % nu, text,
+                                         flags=re.M))
+    return edit
+
+
+NEWTON_CASES = (("hertzCylinder", [], None, "cylinderContact"),
+                ("hertzCylinder", ["-refine", "2"], None, "cylinderContact"),
+                ("hertzCylinder", [], 0.49, "cylinderContact"),
+                ("hertzSphere", [], None, "sphereContact"),
+                ("hertzSphereTets", [], None, "sphereContact"),
+                ("contactPatchTest", [], None, "lowerTop"),
+                ("finiteStrainPatchTest", [], None, "lowerTop"),
+                ("shallowIroning", [], None, "foundationContact"))
+
+
+def newton_log(case):
+    """(Newton steps, products) per load step of a Newton run's log."""
+    path = os.path.join(case, "log." + SOLVER)
+    log = open(path).read() if os.path.exists(path) else ""
+    return [(int(a), int(b)) for a, b in
+            re.findall(r"newtonKrylov: (\d+) Newton steps, (\d+) products", log)]
+
+
+def newton_bench():
+    """Each case with the segregated loop (Anderson, as the tutorial sets
+    it) and with Newton-Krylov, side by side."""
+    print("\n== Newton-Krylov against the segregated loop (one run each, one after"
+          " the other)")
+    head = ("case", "loop", "steps", "corr", "Newton/step", "linear", "wall/step s",
+            "wall ratio", "dF_N rel")
+    fmt = "%-32s %-10s %5s %7s %12s %9s %11s %10s %9s"
+    print(fmt % head)
+    md = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    for tutorial, opts, nu, patch in NEWTON_CASES:
+        label = tutorial + ("".join(" " + o for o in opts)) + (" nu %g" % nu if nu else "")
+        tag = (tutorial + "".join(o.strip("-") for o in opts)
+               + ("_nu%g" % nu if nu else ""))
+        src = os.path.join(ROOT, "tutorials", tutorial)
+        edit = set_nu(nu) if nu else None
+        seg = bench_case("newton_%s_segregated" % tag, src, allrun=list(opts), edit=edit)
+        nk = bench_case("newton_%s_newtonKrylov" % tag, src,
+                        allrun=list(opts) + ["-algorithm", "newtonKrylov"], edit=edit)
+        fs = contactreport.last_row(seg["case"], patch) if seg["converged"] else None
+        fn = contactreport.last_row(nk["case"], patch) if nk["converged"] else None
+        dF = (abs(fn["normalForce"] - fs["normalForce"]) / abs(fs["normalForce"])
+              if fs and fn and fs["normalForce"] else float("nan"))
+        steps = newton_log(nk["case"])
+        for r, loop in ((seg, "anderson"), (nk, "newton")):
+            newton = ("%.1f (max %d)" % (sum(a for a, _ in steps) / len(steps),
+                                         max(a for a, _ in steps))
+                      if loop == "newton" and steps else "-")
+            row = (label, loop, "%d" % r["steps"],
+                   "%d%s" % (r["ncorr"] or 0, "" if r["converged"] else "*"), newton,
+                   "%d" % (r["linear"] or 0), "%.3f" % r["wall_step"],
+                   "%.2f" % (nk["wall"] / seg["wall"]) if loop == "newton" else "",
+                   "%.1e" % dF if loop == "newton" else "")
+            print(fmt % row)
+            md.append("| " + " | ".join(row) + " |")
+        if tutorial == "shallowIroning":
+            sys.path.insert(0, os.path.join(src, "validation"))
+            compare = importlib.import_module("compareIroning")
+            for r, loop in ((seg, "anderson"), (nk, "newton")):
+                res = compare.compare(r["case"])
+                print("    %s: V(1.5) %.1f  H(1.5) %.1f  H/V %.3f" % (
+                    loop, res["V15"], res["H15"], res["ratio"]))
+    print("(* a step did not converge; corr counts every corrector, Newton's products"
+          " included)")
+    open(os.path.join(WORK, "newton.md"), "w").write("\n".join(md) + "\n")
+
+
 def main():
     global FRICTION_CATTANEO_METHODS
     import argparse
@@ -1580,7 +1668,7 @@ def main():
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa", "roles",
                                        "perturbedLagrange", "methods", "friction",
                                        "unstructured", "finiteStrain", "ironing", "rigid",
-                                       "gamg", "big"),
+                                       "gamg", "big", "newton"),
                     help="run one part only (convergence includes hertz's runs)")
     ap.add_argument("--cattaneo-methods", nargs="+", metavar="METHOD",
                     help="the friction part's cattaneoMindlin methods (default: %s;"
@@ -1619,6 +1707,8 @@ def main():
         gamg_bench()
     if args.only in (None, "big"):
         big_bench()
+    if args.only in (None, "newton"):
+        newton_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 

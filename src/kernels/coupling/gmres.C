@@ -67,6 +67,26 @@ GmresResult Gmres::solve
     Vector& x
 ) const
 {
+    return solve(A, b, x, params_.relativeTolerance);
+}
+
+
+GmresResult Gmres::solve
+(
+    const Operator& A,
+    const Vector& b,
+    Vector& x,
+    double relativeTolerance
+) const
+{
+    if (!(relativeTolerance > 0 && relativeTolerance < 1))
+    {
+        throw std::invalid_argument
+        (
+            "Gmres::solve: relativeTolerance = "
+          + std::to_string(relativeTolerance) + ": it must lie in (0, 1)"
+        );
+    }
     const std::size_t n = b.size();
     const int m = params_.maxIterations;
 
@@ -95,7 +115,7 @@ GmresResult Gmres::solve
     Eigen::VectorXd s = Eigen::VectorXd::Zero(m + 1);
     s(0) = beta;
 
-    const double target = params_.relativeTolerance*beta;
+    const double target = relativeTolerance*beta;
     int k = 0;
     Vector w;
 

@@ -191,4 +191,20 @@ void Foam::contactStateReporter::restoreCorrectorStates
 }
 
 
+bool Foam::contactStateReporter::limitsSteps(const volVectorField& D)
+{
+    bool limits = false;
+    forEachReporter<const contactStateReporter>
+    (
+        D.boundaryField(),
+        [&](const contactStateReporter& rep, const label)
+        {
+            limits = rep.limitsSteps() || limits;
+        }
+    );
+    reduce(limits, orOp<bool>());
+    return limits;
+}
+
+
 // ************************************************************************* //

@@ -75,6 +75,9 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     fdStep_(1e-7),
     maxBacktracks_(4),
     backtrackOnChange_(true),
+    forcing_(true),
+    normPrevious_(0),
+    etaPrevious_(0),
     normBase_(0),
     alpha_(1),
     nBacktracks_(0),
@@ -107,7 +110,7 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     }
 
     c4f::coupling::GmresParameters p;
-    p.relativeTolerance = coeffs.getOrDefault<scalar>("krylovTolerance", 1e-2);
+    p.relativeTolerance = coeffs.getOrDefault<scalar>("krylovTolerance", 1e-3);
     p.maxIterations = coeffs.getOrDefault<label>("maxKrylov", 100);
     try
     {
@@ -122,7 +125,7 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
             tol ? Foam::name(p.relativeTolerance) : Foam::name(p.maxIterations),
             tol
           ? "it must lie in (0, 1) (GMRES's relative tolerance of each"
-            " Newton correction; 0.01 by default)"
+            " Newton correction; 0.001 by default)"
           : "it must be an integer >= 1 (the products, each one corrector,"
             " of a Newton step; 100 by default)"
         );
@@ -152,6 +155,7 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
 
     backtrackOnChange_ =
         coeffs.getOrDefault<bool>("backtrackOnChange", true);
+    forcing_ = coeffs.getOrDefault<bool>("adaptiveForcing", true);
 
     gmres_.reset(new c4f::coupling::Gmres(p, processorSumReduction()));
 }
@@ -183,6 +187,8 @@ Foam::dictionary Foam::newtonKrylovCorrector::solverControls
 
 void Foam::newtonKrylovCorrector::reset()
 {
+    normPrevious_ = 0;
+    etaPrevious_ = 0;
     xBase_.clear();
     dBase_.clear();
     normBase_ = 0;
@@ -284,8 +290,39 @@ void Foam::newtonKrylovCorrector::step
             }
         };
 
+    // The forcing term: Eisenstat & Walker's (1996, SIAM J. Sci. Comput.
+    // 17:16, choice 2 with gamma 0.9, alpha 2 and their safeguard), between
+    // krylovTolerance and 0.1: a loose solve while the residual falls
+    // slowly (far from the solution, or on a changing active set), a tight
+    // one as Newton's convergence sets in
+    const scalar tolMin = gmres_->parameters().relativeTolerance;
+    const scalar maxForcing = 0.1;
+    scalar eta = tolMin;
+    // Not with a method that limits the updates (the barrier keeping its
+    // gaps open): its loose first steps led hertzCylinder's gaps to
+    // 1e-15 m, step after cut step, then a product closed one (with
+    // krylovTolerance throughout, 24 Newton steps)
+    const bool adaptive = forcing_ && !contactStateReporter::limitsSteps(D_);
+    if (adaptive && normPrevious_ > 0)
+    {
+        const scalar ratio = normF/normPrevious_;
+        scalar e = 0.9*ratio*ratio;
+        const scalar safeguard = 0.9*etaPrevious_*etaPrevious_;
+        if (safeguard > 0.1)
+        {
+            e = max(e, safeguard);
+        }
+        eta = min(max(e, tolMin), maxForcing);
+    }
+    else if (adaptive)
+    {
+        eta = max(tolMin, maxForcing);
+    }
+    normPrevious_ = normF;
+    etaPrevious_ = eta;
+
     std::vector<double> d;
-    const c4f::coupling::GmresResult r = gmres_->solve(product, F_, d);
+    const c4f::coupling::GmresResult r = gmres_->solve(product, F_, d, eta);
     nProducts_ += lastProducts_;
     lastKrylovResidual_ = r.residualNorm/max(r.initialNorm, VSMALL);
     if (!r.converged)

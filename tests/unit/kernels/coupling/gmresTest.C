@@ -245,6 +245,17 @@ TEST(Gmres, ParametersOutOfRangeAreRefused)
         p.relativeTolerance = tol;
         EXPECT_THROW(Gmres{p}, std::invalid_argument) << tol;
     }
+
+    // A forcing term given to one solve is checked the same way
+    const Gmres gmres;
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(3, 3);
+    Vec x;
+    for (const double tol : {0.0, 1.5, std::nan("")})
+    {
+        EXPECT_THROW(gmres.solve(dense(I), Vec(3, 1.0), x, tol), std::invalid_argument)
+            << tol;
+    }
+    EXPECT_TRUE(gmres.solve(dense(I), Vec(3, 1.0), x, 0.5).converged);
 }
 
 

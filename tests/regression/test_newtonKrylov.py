@@ -1,0 +1,126 @@
+"""The Newton-Krylov outer loop (`-algorithm newtonKrylov`, solidMechanics'
+algorithm newtonKrylov): every method on hertzCylinder, the contact patch
+test, the finite-strain patch test, Coulomb friction (cattaneoMindlin,
+slidingBlock) and a decomposed run, each passing its tutorial's validation
+and, where the segregated run is the reference, giving its answer to
+what the residual tolerance (1e-9) leaves. The Newton vs Anderson table
+(iterations, products, wall time) is make bench's (tests/bench/run.py
+--only newton)."""
+import os
+import re
+
+import pytest
+
+import harness
+import runs
+from c4fpost import methods
+
+LM = runs.LM
+NEWTON = ["-algorithm", "newtonKrylov"]
+
+
+def newton_steps(case):
+    """(Newton steps, products, unconverged GMRES solves) of every load
+    step in the solver's log."""
+    text = open(os.path.join(case, "log.solidContactFoam")).read()
+    return [tuple(int(v) for v in m) for m in re.findall(
+        r"newtonKrylov: (\d+) Newton steps, (\d+) products, (\d+) GMRES", text)]
+
+
+def newton_ran(ck, r, name, steps=1):
+    """The log holds one newtonKrylov line per load step (`steps` of them),
+    each with at least one Newton step and every GMRES solve converged."""
+    s = newton_steps(r["case"])
+    ck.add(name + "/newton_steps", len(s) == steps and all(n >= 1 for n, _, _ in s),
+           note="%s (Newton steps, products, unconverged) per load step" % s)
+    ck.add(name + "/gmres_converged", bool(s) and all(u == 0 for _, _, u in s),
+           note="%s" % s)
+
+
+def group(method):
+    # The segregated reference runs in the same worker
+    return pytest.mark.xdist_group("hertzCylinder_" + method)
+
+
+@pytest.mark.parametrize("method", [pytest.param(m, marks=group(m))
+                                    for m in methods.table()])
+def test_hertz_newton_equals_segregated(method):
+    """compareHertz's checks under Newton-Krylov, and the segregated run's
+    force and peak pressure to 1e-6 (measured for LM: 1.5e-9)."""
+    ck = harness.Checks()
+    name = "hertzCylinder_newtonKrylov_" + method
+    r = harness.tutorial_run("hertzCylinder", name, ["-method", method] + NEWTON)
+    if ck.run(r, name):
+        newton_ran(ck, r, name)
+        ck.contact_agrees(harness.need(runs.hertz(method)), r["case"], name, 1e-6,
+                          ref_name="segregated")
+    ck.verify()
+
+
+@pytest.mark.parametrize("method", [LM, runs.PENALTY])
+def test_patch_test_newton(method):
+    """The contact patch test's checks (the exact methods to 1e-6, the
+    penalty to its offset) under Newton-Krylov."""
+    ck = harness.Checks()
+    name = "contactPatchTest_newtonKrylov_" + method
+    r = harness.tutorial_run("contactPatchTest", name, ["-method", method] + NEWTON)
+    if ck.run(r, name):
+        newton_ran(ck, r, name)
+    ck.verify()
+
+
+def test_finite_strain_patch_test_newton():
+    """finiteStrainPatchTest (neo-Hookean, 80 % in one step, LM): the
+    closed form to 1e-6 under Newton-Krylov (measured 2e-8 in 6 Newton
+    steps). It needs every product to start from the state the Newton
+    step's corrector left (the contact faces' values and coefficients):
+    without, it stopped at a state 2 off in sigma_yy whose residual was
+    below the tolerance."""
+    ck = harness.Checks()
+    name = "finiteStrainPatchTest_newtonKrylov"
+    r = harness.tutorial_run("finiteStrainPatchTest", name, NEWTON)
+    if ck.run(r, name):
+        newton_ran(ck, r, name)
+    ck.verify()
+
+
+@pytest.mark.xdist_group("cattaneoMindlin_" + LM)
+def test_cattaneo_newton_equals_segregated():
+    """cattaneoMindlin (Coulomb, two steps) under Newton-Krylov, the stick
+    flags of each Newton step frozen like the active set: its checks, and
+    the segregated run's normal force and peak to 1e-6."""
+    ck = harness.Checks()
+    name = "cattaneoMindlin_newtonKrylov"
+    r = harness.tutorial_run("cattaneoMindlin", name, ["-method", LM] + NEWTON)
+    if ck.run(r, name):
+        newton_ran(ck, r, name, steps=2)
+        ck.contact_agrees(harness.need(runs.cattaneo(LM)), r["case"], name, 1e-6,
+                          ref_name="segregated", patch="cylinderContact")
+    ck.verify()
+
+
+def test_slidingBlock_newton():
+    """slidingBlock (Coulomb, full slip over five steps) under Newton-Krylov:
+    its checks."""
+    ck = harness.Checks()
+    name = "slidingBlock_newtonKrylov"
+    r = harness.tutorial_run("slidingBlock", name, ["-method", LM] + NEWTON)
+    if ck.run(r, name):
+        newton_ran(ck, r, name, steps=5)
+    ck.verify()
+
+
+@pytest.mark.xdist_group("hertzCylinder_" + LM)
+def test_hertz_newton_parallel_equals_serial():
+    """hertzCylinder -parallel (the cut through the contact zone) under
+    Newton-Krylov: GMRES's dot products summed over the processors, the
+    serial Newton run's force and peak to 1e-6."""
+    ck = harness.Checks()
+    name = "hertzCylinderParallel_newtonKrylov"
+    r = harness.tutorial_run("hertzCylinder", name, ["-method", LM, "-parallel"] + NEWTON)
+    if ck.run(r, name):
+        newton_ran(ck, r, name)
+        serial = harness.tutorial_run("hertzCylinder", "hertzCylinder_newtonKrylov_" + LM,
+                                      ["-method", LM] + NEWTON)
+        ck.contact_agrees(harness.need(serial), r["case"], name, 1e-6, ref_name="serial")
+    ck.verify()
