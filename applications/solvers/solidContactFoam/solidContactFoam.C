@@ -93,6 +93,12 @@ Description
     way may pass through J <= 0: the laws then give their small-strain
     stress). `sigma` is the Cauchy stress P F^T / J.
 
+    With `algorithm newtonKrylov` each load step is solved by a
+    Jacobian-free Newton-Krylov loop on the same corrector instead
+    (newtonKrylovCorrector): the corrector's solve then takes a fixed
+    number of GAMG cycles, the convergence test is the same, and
+    `correctors` counts every corrector, GMRES's products included.
+
     Each step prints one summary line:
         Time = <t>  correctors = <n>  residual = <r>  [contact state]
 
@@ -108,6 +114,7 @@ Usage
         andersonDepth | difference columns kept (>= 1)         | no       | 15
         andersonRestartGrowth | restart when a step grows the residual by more (>= 1) | no | never
         nonlinearGeometry | finite deformation (total Lagrangian) | no | no
+        algorithm     | segregated or newtonKrylov             | no       | segregated
     \endtable
 
     `solidContactFoam -listMethods` prints the contact methods of the
