@@ -98,16 +98,29 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
             << exit(FatalIOError);
     };
 
-    linearIterations_ = coeffs.getOrDefault<label>("linearIterations", 2);
-    if (linearIterations_ < 1)
+    // An integer entry with its lower bound
+    const auto readCount =
+        [&](const word& entry, const label def, const label min, const char* what)
     {
-        bad
-        (
-            "linearIterations", Foam::name(linearIterations_),
-            "it must be an integer >= 1 (the GAMG cycles of every"
-            " corrector's solve; 2 by default)"
-        );
-    }
+        const label v = coeffs.getOrDefault<label>(entry, def);
+        if (v < min)
+        {
+            bad
+            (
+                entry, Foam::name(v),
+                (
+                    "it must be an integer >= " + Foam::name(min) + " ("
+                  + what + "; " + Foam::name(def) + " by default)"
+                ).c_str()
+            );
+        }
+        return v;
+    };
+
+    linearIterations_ = readCount
+    (
+        "linearIterations", 2, 1, "the GAMG cycles of every corrector's solve"
+    );
 
     c4f::coupling::GmresParameters p;
     p.relativeTolerance = coeffs.getOrDefault<scalar>("krylovTolerance", 1e-3);
@@ -116,7 +129,7 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     {
         c4f::coupling::Gmres::check(p);
     }
-    catch (const std::invalid_argument& e)
+    catch (const std::invalid_argument&)
     {
         const bool tol = !(p.relativeTolerance > 0 && p.relativeTolerance < 1);
         bad
@@ -142,16 +155,10 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
         );
     }
 
-    maxBacktracks_ = coeffs.getOrDefault<label>("maxBacktracks", 4);
-    if (maxBacktracks_ < 0)
-    {
-        bad
-        (
-            "maxBacktracks", Foam::name(maxBacktracks_),
-            "it must be an integer >= 0 (the line search's halvings; 4 by"
-            " default)"
-        );
-    }
+    maxBacktracks_ = readCount
+    (
+        "maxBacktracks", 4, 0, "the line search's halvings"
+    );
 
     backtrackOnChange_ =
         coeffs.getOrDefault<bool>("backtrackOnChange", true);
