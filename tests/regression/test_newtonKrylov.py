@@ -84,6 +84,37 @@ def test_finite_strain_patch_test_newton():
     ck.verify()
 
 
+@pytest.mark.parametrize("friction", ["stick"])
+def test_finite_strain_patch_test_newton_stick(friction):
+    """The same with the stick law: every face tied, the frictionless
+    answer to 1e-6."""
+    ck = harness.Checks()
+    name = "finiteStrainPatchTest_newtonKrylov_" + friction
+    r = harness.tutorial_run("finiteStrainPatchTest", name, ["-friction", friction] + NEWTON)
+    if ck.run(r, name):
+        newton_ran(ck, r, name)
+    ck.verify()
+
+
+def test_finite_strain_coulomb_newton_refused():
+    """Coulomb slip under finite deformation is refused under Newton (it
+    converged 10 % off the closed form on this test): a FatalIOError naming
+    the entry and what is valid, and no time directory written."""
+    ck = harness.Checks()
+    name = "finiteStrainPatchTest_newtonKrylov_coulomb"
+    case = harness.fresh_copy("finiteStrainPatchTest", name)
+    rc, _ = harness.run(["./Allrun", "-friction", "coulomb"] + NEWTON, cwd=case,
+                        log=os.path.join(case, "log.Allrun"))
+    log = os.path.join(case, "log.solidContactFoam")
+    text = open(log).read() if os.path.exists(log) else ""
+    wrote = [d for d in os.listdir(case) if re.fullmatch(r"[1-9][0-9.e+-]*", d)]
+    words = ["FOAM FATAL IO ERROR", "Entry 'algorithm' = newtonKrylov", "coulomb",
+             "algorithm segregated", "fvSolution"]
+    ck.add(name + "/refused", rc != 0 and all(w in text for w in words) and not wrote,
+           note="(rc=%d, times written %s, see %s)" % (rc, wrote, log))
+    ck.verify()
+
+
 @pytest.mark.xdist_group("cattaneoMindlin_" + LM)
 def test_cattaneo_newton_equals_segregated():
     """cattaneoMindlin (Coulomb, two steps) under Newton-Krylov, the stick

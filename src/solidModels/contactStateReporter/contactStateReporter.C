@@ -207,4 +207,20 @@ bool Foam::contactStateReporter::limitsSteps(const volVectorField& D)
 }
 
 
+bool Foam::contactStateReporter::frictionSlips(const volVectorField& D)
+{
+    bool slips = false;
+    forEachReporter<const contactStateReporter>
+    (
+        D.boundaryField(),
+        [&](const contactStateReporter& rep, const label)
+        {
+            slips = rep.frictionSlips() || slips;
+        }
+    );
+    reduce(slips, orOp<bool>());
+    return slips;
+}
+
+
 // ************************************************************************* //
