@@ -64,7 +64,7 @@ Description
     no longer there: a face at a sharp master corner that switched
     between two positions). `acceleration none` is the plain
     iteration. Measured at tolerance 1e-9: plateHole 36 correctors
-    instead of 204, hertzCylinder 50 (LM) instead of 305; make bench
+    instead of 204, hertzCylinder 45 (LM) instead of 222; make bench
     prints the table.
 
     Components of D whose magnitude stays below 1e-10 of the largest are
