@@ -19,7 +19,7 @@ NormalLawValue augmentedLagrangePressure
     const double trial = lambda - eps*gap;
     if (trial > 0)
     {
-        return {trial, -eps};
+        return {trial, -eps, 1.0};
     }
     // Also taken for a NaN trial: no pressure rather than a NaN one
     return {0.0, 0.0};

@@ -86,17 +86,18 @@ NormalLawValue crossConstraintPressure
 
     if (gap <= 0)
     {
-        return {lambda - eps*gap, -eps};
+        return {lambda - eps*gap, -eps, 1.0};
     }
 
     if (!(eps > 0))
     {
         // The eps -> 0 limit: no decay (the logarithms need eps > 0)
-        return {lambda, 0.0};
+        return {lambda, 0.0, 1.0};
     }
 
     const double x = decayExponent(eps, gap, lambda);
-    return {scaledDecay(lambda, x), -scaledDecay(eps, x)};
+    // dp/dlambda = d(lambda e^-x)/dlambda with x = eps g/lambda: e^-x (1 + x)
+    return {scaledDecay(lambda, x), -scaledDecay(eps, x), scaledDecay(1.0 + x, x)};
 }
 
 } // End namespace contact

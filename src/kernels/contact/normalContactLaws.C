@@ -46,6 +46,21 @@ bool activeByPrimalDual(const double lambdaN, const double gap, const double c)
 }
 
 
+ComplementarityValue primalDualComplementarity
+(
+    const double lambdaN,
+    const double gap,
+    const double c
+)
+{
+    if (activeByPrimalDual(lambdaN, gap, c))
+    {
+        return {c*gap, 0.0, c};
+    }
+    return {lambdaN, 1.0, 0.0};
+}
+
+
 int updateActiveSet
 (
     const std::vector<double>& lambdaN,

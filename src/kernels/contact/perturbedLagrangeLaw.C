@@ -40,7 +40,10 @@ NormalLawValue perturbedLagrangeStepPressure
     {
         return {0.0, 0.0};
     }
-    return {p, -1.0/(1.0/Kc + 1.0/eps)};
+    // p = lambda + (-g - lambda/eps) k, k = 1/(1/Kc + 1/eps): dp/dlambda is
+    // 1 - k/eps = k/Kc, which tends to 1 as eps -> infinity (exact)
+    const double k = 1.0/(1.0/Kc + 1.0/eps);
+    return {p, -k, k/Kc};
 }
 
 
