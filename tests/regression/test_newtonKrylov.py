@@ -14,6 +14,7 @@ import pytest
 import harness
 import runs
 from c4fpost import methods
+from regression.test_restart import restart_reproduces
 
 LM = runs.LM
 NEWTON = ["-algorithm", "newtonKrylov"]
@@ -154,4 +155,19 @@ def test_hertz_newton_parallel_equals_serial():
         serial = harness.tutorial_run("hertzCylinder", "hertzCylinder_newtonKrylov_" + LM,
                                       ["-method", LM] + NEWTON)
         ck.contact_agrees(harness.need(serial), r["case"], name, 1e-6, ref_name="serial")
+    ck.verify()
+
+
+@pytest.mark.xdist_group("hertzCylinder_" + LM)
+def test_hertz_newton_restart():
+    """A finished Newton run continued for a second step at the same load
+    (the contact state read back with the time) starts converged: at most
+    5 correctors, Newton's products included, the same force to 1e-6 and
+    the written slave traction to 1e-5 (restart_reproduces)."""
+    ck = harness.Checks()
+    name = "hertzCylinder_newtonKrylov_restart"
+    r = harness.tutorial_run("hertzCylinder", "hertzCylinder_newtonKrylov_" + LM,
+                             ["-method", LM] + NEWTON)
+    if ck.run(r, "hertzCylinder_newtonKrylov_" + LM):
+        restart_reproduces(ck, r["case"], name)
     ck.verify()
