@@ -97,22 +97,35 @@ def test_finite_strain_patch_test_newton_stick(friction):
     ck.verify()
 
 
+def refused(ck, tutorial, name, args, words):
+    """The tutorial's Allrun with `args` stops with a FatalIOError holding
+    `words`, and no time directory is written."""
+    case = harness.fresh_copy(tutorial, name)
+    rc, _ = harness.run(["./Allrun"] + args, cwd=case, log=os.path.join(case, "log.Allrun"))
+    log = os.path.join(case, "log.solidContactFoam")
+    text = open(log).read() if os.path.exists(log) else ""
+    wrote = [d for d in os.listdir(case) if re.fullmatch(r"[1-9][0-9.e+-]*", d)]
+    words = ["FOAM FATAL IO ERROR", "Entry 'algorithm' = newtonKrylov",
+             "algorithm segregated", "fvSolution"] + words
+    ck.add(name + "/refused", rc != 0 and all(w in text for w in words) and not wrote,
+           note="(rc=%d, times written %s, see %s)" % (rc, wrote, log))
+
+
 def test_finite_strain_coulomb_newton_refused():
     """Coulomb slip under finite deformation is refused under Newton (it
     converged 10 % off the closed form on this test): a FatalIOError naming
     the entry and what is valid, and no time directory written."""
     ck = harness.Checks()
-    name = "finiteStrainPatchTest_newtonKrylov_coulomb"
-    case = harness.fresh_copy("finiteStrainPatchTest", name)
-    rc, _ = harness.run(["./Allrun", "-friction", "coulomb"] + NEWTON, cwd=case,
-                        log=os.path.join(case, "log.Allrun"))
-    log = os.path.join(case, "log.solidContactFoam")
-    text = open(log).read() if os.path.exists(log) else ""
-    wrote = [d for d in os.listdir(case) if re.fullmatch(r"[1-9][0-9.e+-]*", d)]
-    words = ["FOAM FATAL IO ERROR", "Entry 'algorithm' = newtonKrylov", "coulomb",
-             "algorithm segregated", "fvSolution"]
-    ck.add(name + "/refused", rc != 0 and all(w in text for w in words) and not wrote,
-           note="(rc=%d, times written %s, see %s)" % (rc, wrote, log))
+    refused(ck, "finiteStrainPatchTest", "finiteStrainPatchTest_newtonKrylov_coulomb",
+            ["-friction", "coulomb"] + NEWTON, ["coulomb"])
+    ck.verify()
+
+
+def test_rigid_tool_newton_refused():
+    """A rigid tool is refused under Newton (GMRES stalled on rigidSphere
+    and rigidPunch): the same kind of error."""
+    ck = harness.Checks()
+    refused(ck, "rigidSphere", "rigidSphere_newtonKrylov", NEWTON, ["rigid tool"])
     ck.verify()
 
 
@@ -170,4 +183,15 @@ def test_hertz_newton_restart():
                              ["-method", LM] + NEWTON)
     if ck.run(r, "hertzCylinder_newtonKrylov_" + LM):
         restart_reproduces(ck, r["case"], name)
+    ck.verify()
+
+
+def test_self_contact_newton():
+    """selfContactStrip (the strip closing its slot, six steps) under Newton:
+    its checks against CalculiX's force at each contact step."""
+    ck = harness.Checks()
+    name = "selfContactStrip_newtonKrylov"
+    r = harness.tutorial_run("selfContactStrip", name, ["-method", LM] + NEWTON)
+    if ck.run(r, name):
+        newton_ran(ck, r, name, steps=6)
     ck.verify()

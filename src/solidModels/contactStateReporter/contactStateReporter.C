@@ -223,4 +223,20 @@ bool Foam::contactStateReporter::frictionSlips(const volVectorField& D)
 }
 
 
+bool Foam::contactStateReporter::againstRigidTool(const volVectorField& D)
+{
+    bool rigid = false;
+    forEachReporter<const contactStateReporter>
+    (
+        D.boundaryField(),
+        [&](const contactStateReporter& rep, const label)
+        {
+            rigid = rep.againstRigidTool() || rigid;
+        }
+    );
+    reduce(rigid, orOp<bool>());
+    return rigid;
+}
+
+
 // ************************************************************************* //
