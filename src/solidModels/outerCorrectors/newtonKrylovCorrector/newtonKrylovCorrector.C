@@ -232,8 +232,9 @@ void Foam::newtonKrylovCorrector::step
     }
     const scalar normF = globalNorm(F_);
 
-    // Line search along the last correction: only while G stays on the
-    // same piece (a new active set makes |F| incomparable)
+    // Line search along the last correction, also where the corrector at
+    // the trial changed the active set (backtrackOnChange: a step from a
+    // poor set overshoots, see the header)
     if
     (
         (!changed || backtrackOnChange_)
