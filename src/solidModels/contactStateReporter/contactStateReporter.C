@@ -24,6 +24,23 @@ void forEachReporter(Boundary& bf, Fn f)
     }
 }
 
+//- Whether pred holds for a reporting patch of D on any processor
+template<class Pred>
+bool anyReporter(const Foam::volVectorField& D, Pred pred)
+{
+    bool any = false;
+    forEachReporter<const Foam::contactStateReporter>
+    (
+        D.boundaryField(),
+        [&](const Foam::contactStateReporter& rep, const Foam::label)
+        {
+            any = pred(rep) || any;
+        }
+    );
+    Foam::reduce(any, Foam::orOp<bool>());
+    return any;
+}
+
 } // End anonymous namespace
 
 
@@ -193,49 +210,31 @@ void Foam::contactStateReporter::restoreCorrectorStates
 
 bool Foam::contactStateReporter::limitsSteps(const volVectorField& D)
 {
-    bool limits = false;
-    forEachReporter<const contactStateReporter>
+    return anyReporter
     (
-        D.boundaryField(),
-        [&](const contactStateReporter& rep, const label)
-        {
-            limits = rep.limitsSteps() || limits;
-        }
+        D,
+        [](const contactStateReporter& rep) { return rep.limitsSteps(); }
     );
-    reduce(limits, orOp<bool>());
-    return limits;
 }
 
 
 bool Foam::contactStateReporter::frictionSlips(const volVectorField& D)
 {
-    bool slips = false;
-    forEachReporter<const contactStateReporter>
+    return anyReporter
     (
-        D.boundaryField(),
-        [&](const contactStateReporter& rep, const label)
-        {
-            slips = rep.frictionSlips() || slips;
-        }
+        D,
+        [](const contactStateReporter& rep) { return rep.frictionSlips(); }
     );
-    reduce(slips, orOp<bool>());
-    return slips;
 }
 
 
 bool Foam::contactStateReporter::againstRigidTool(const volVectorField& D)
 {
-    bool rigid = false;
-    forEachReporter<const contactStateReporter>
+    return anyReporter
     (
-        D.boundaryField(),
-        [&](const contactStateReporter& rep, const label)
-        {
-            rigid = rep.againstRigidTool() || rigid;
-        }
+        D,
+        [](const contactStateReporter& rep) { return rep.againstRigidTool(); }
     );
-    reduce(rigid, orOp<bool>());
-    return rigid;
 }
 
 

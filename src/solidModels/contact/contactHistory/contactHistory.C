@@ -263,9 +263,6 @@ void Foam::contactHistory::write(Ostream& os) const
 }
 
 
-// ************************************************************************* //
-
-
 void Foam::contactHistory::saveCorrector()
 {
     snapshot_.reset(new correctorSnapshot(fields_));
@@ -295,3 +292,6 @@ void Foam::contactHistory::restoreCorrector(const bool frozen)
         friction_->state() = snapshot_->friction();
     }
 }
+
+
+// ************************************************************************* //
