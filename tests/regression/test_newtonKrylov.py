@@ -38,6 +38,21 @@ def newton_ran(ck, r, name, steps=1):
            note="%s" % s)
 
 
+def newton_run(ck, tutorial, name, args, steps=1):
+    """The tutorial's Allrun with `args` under Newton-Krylov (shared by
+    name), its validation checks and newton_ran's; the run, or None where
+    it failed."""
+    r = harness.tutorial_run(tutorial, name, list(args) + NEWTON)
+    if not ck.run(r, name):
+        return None
+    newton_ran(ck, r, name, steps)
+    return r
+
+
+def hertz_newton_name(method):
+    return "hertzCylinder_newtonKrylov_" + method
+
+
 def group(method):
     # The segregated reference runs in the same worker
     return pytest.mark.xdist_group("hertzCylinder_" + method)
@@ -49,10 +64,9 @@ def test_hertz_newton_equals_segregated(method):
     """compareHertz's checks under Newton-Krylov, and the segregated run's
     force and peak pressure to 1e-6 (measured for LM: 1.5e-9)."""
     ck = harness.Checks()
-    name = "hertzCylinder_newtonKrylov_" + method
-    r = harness.tutorial_run("hertzCylinder", name, ["-method", method] + NEWTON)
-    if ck.run(r, name):
-        newton_ran(ck, r, name)
+    name = hertz_newton_name(method)
+    r = newton_run(ck, "hertzCylinder", name, ["-method", method])
+    if r:
         ck.contact_agrees(harness.need(runs.hertz(method)), r["case"], name, 1e-6,
                           ref_name="segregated")
     ck.verify()
@@ -64,9 +78,7 @@ def test_patch_test_newton(method):
     penalty to its offset) under Newton-Krylov."""
     ck = harness.Checks()
     name = "contactPatchTest_newtonKrylov_" + method
-    r = harness.tutorial_run("contactPatchTest", name, ["-method", method] + NEWTON)
-    if ck.run(r, name):
-        newton_ran(ck, r, name)
+    newton_run(ck, "contactPatchTest", name, ["-method", method])
     ck.verify()
 
 
@@ -79,9 +91,7 @@ def test_finite_strain_patch_test_newton():
     below the tolerance."""
     ck = harness.Checks()
     name = "finiteStrainPatchTest_newtonKrylov"
-    r = harness.tutorial_run("finiteStrainPatchTest", name, NEWTON)
-    if ck.run(r, name):
-        newton_ran(ck, r, name)
+    newton_run(ck, "finiteStrainPatchTest", name, [])
     ck.verify()
 
 
@@ -91,9 +101,7 @@ def test_finite_strain_patch_test_newton_stick(friction):
     answer to 1e-6."""
     ck = harness.Checks()
     name = "finiteStrainPatchTest_newtonKrylov_" + friction
-    r = harness.tutorial_run("finiteStrainPatchTest", name, ["-friction", friction] + NEWTON)
-    if ck.run(r, name):
-        newton_ran(ck, r, name)
+    newton_run(ck, "finiteStrainPatchTest", name, ["-friction", friction])
     ck.verify()
 
 
@@ -136,9 +144,8 @@ def test_cattaneo_newton_equals_segregated():
     the segregated run's normal force and peak to 1e-6."""
     ck = harness.Checks()
     name = "cattaneoMindlin_newtonKrylov"
-    r = harness.tutorial_run("cattaneoMindlin", name, ["-method", LM] + NEWTON)
-    if ck.run(r, name):
-        newton_ran(ck, r, name, steps=2)
+    r = newton_run(ck, "cattaneoMindlin", name, ["-method", LM], steps=2)
+    if r:
         ck.contact_agrees(harness.need(runs.cattaneo(LM)), r["case"], name, 1e-6,
                           ref_name="segregated", patch="cylinderContact")
     ck.verify()
@@ -149,9 +156,7 @@ def test_slidingBlock_newton():
     its checks."""
     ck = harness.Checks()
     name = "slidingBlock_newtonKrylov"
-    r = harness.tutorial_run("slidingBlock", name, ["-method", LM] + NEWTON)
-    if ck.run(r, name):
-        newton_ran(ck, r, name, steps=5)
+    newton_run(ck, "slidingBlock", name, ["-method", LM], steps=5)
     ck.verify()
 
 
@@ -162,10 +167,9 @@ def test_hertz_newton_parallel_equals_serial():
     serial Newton run's force and peak to 1e-6."""
     ck = harness.Checks()
     name = "hertzCylinderParallel_newtonKrylov"
-    r = harness.tutorial_run("hertzCylinder", name, ["-method", LM, "-parallel"] + NEWTON)
-    if ck.run(r, name):
-        newton_ran(ck, r, name)
-        serial = harness.tutorial_run("hertzCylinder", "hertzCylinder_newtonKrylov_" + LM,
+    r = newton_run(ck, "hertzCylinder", name, ["-method", LM, "-parallel"])
+    if r:
+        serial = harness.tutorial_run("hertzCylinder", hertz_newton_name(LM),
                                       ["-method", LM] + NEWTON)
         ck.contact_agrees(harness.need(serial), r["case"], name, 1e-6, ref_name="serial")
     ck.verify()
@@ -179,9 +183,8 @@ def test_hertz_newton_restart():
     the written slave traction to 1e-5 (restart_reproduces)."""
     ck = harness.Checks()
     name = "hertzCylinder_newtonKrylov_restart"
-    r = harness.tutorial_run("hertzCylinder", "hertzCylinder_newtonKrylov_" + LM,
-                             ["-method", LM] + NEWTON)
-    if ck.run(r, "hertzCylinder_newtonKrylov_" + LM):
+    r = harness.tutorial_run("hertzCylinder", hertz_newton_name(LM), ["-method", LM] + NEWTON)
+    if ck.run(r, hertz_newton_name(LM)):
         restart_reproduces(ck, r["case"], name)
     ck.verify()
 
@@ -191,7 +194,5 @@ def test_self_contact_newton():
     its checks against CalculiX's force at each contact step."""
     ck = harness.Checks()
     name = "selfContactStrip_newtonKrylov"
-    r = harness.tutorial_run("selfContactStrip", name, ["-method", LM] + NEWTON)
-    if ck.run(r, name):
-        newton_ran(ck, r, name, steps=6)
+    newton_run(ck, "selfContactStrip", name, ["-method", LM], steps=6)
     ck.verify()
