@@ -72,6 +72,24 @@ def fresh_copy(tutorial, name):
     return dst
 
 
+def times_written(case):
+    """The time directories after 0 in case (a refused run writes none)."""
+    return [d for d in os.listdir(case) if re.fullmatch(r"[1-9][0-9.e+-]*", d)]
+
+
+def refused(case, args, words):
+    """Allrun with `args` in case fails, the solver's log has a FatalIOError
+    with every one of `words`, and no time directory was written: (ok,
+    note)."""
+    rc, _ = run(["./Allrun"] + list(args), cwd=case, log=os.path.join(case, "log.Allrun"))
+    log = os.path.join(case, "log.solidContactFoam")
+    text = open(log).read() if os.path.exists(log) else ""
+    wrote = times_written(case)
+    ok = rc != 0 and "FOAM FATAL IO ERROR" in text and all(w in text for w in words) \
+        and not wrote
+    return ok, "(rc=%d, times written %s%s)" % (rc, wrote, "" if ok else ", see %s" % log)
+
+
 def add_controls(case, controls):
     """Entries added to solidMechanics of system/fvSolution."""
     fv = os.path.join(case, "system/fvSolution")

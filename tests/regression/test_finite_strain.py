@@ -22,19 +22,6 @@ LM = "lagrangeMultiplier"
 TUTORIAL = "finiteStrainPatchTest"
 
 
-def refused(case, args, words, log_name="log.solidContactFoam"):
-    """Allrun fails, the solver's log has a FatalIOError with `words`, and
-    no time directory was written."""
-    rc, _ = harness.run(["./Allrun"] + list(args), cwd=case,
-                        log=os.path.join(case, "log.Allrun"))
-    log = os.path.join(case, log_name)
-    text = open(log).read() if os.path.exists(log) else ""
-    wrote = [d for d in os.listdir(case) if re.fullmatch(r"[1-9][0-9.e+-]*", d)]
-    ok = rc != 0 and "FOAM FATAL IO ERROR" in text and all(w in text for w in words) \
-        and not wrote
-    return ok, "(rc=%d%s)" % (rc, "" if ok else ", see %s" % log)
-
-
 @pytest.mark.parametrize("method", methods_where(finite_strain=True))
 def test_finite_strain_patch_test(method):
     ck = harness.Checks()
@@ -61,7 +48,7 @@ def test_method_without_finite_strain_refuses(method):
     ck = harness.Checks()
     name = "%s_%s_refused" % (TUTORIAL, method)
     case = harness.fresh_copy(TUTORIAL, name)
-    ok, note = refused(case, ["-method", method], ["nonlinearGeometry", method])
+    ok, note = harness.refused(case, ["-method", method], ["nonlinearGeometry", method])
     ck.add(name + "/refused", ok, note=note)
     ck.verify()
 
@@ -81,7 +68,7 @@ def test_bad_finite_strain_input(edit, words):
     path, entry, value = edit
     rc, out = harness.run(["foamDictionary", "-entry", entry, "-set", value, path], cwd=case)
     ck.add(name + "/edited", rc == 0, note=out.strip()[-300:] if rc else "")
-    ok, note = refused(case, [], words)
+    ok, note = harness.refused(case, [], words)
     ck.add(name + "/refused", ok, note=note)
     ck.verify()
 
@@ -215,7 +202,7 @@ def test_inverted_cell_stops_the_step():
     harness.run(["blockMesh"], cwd=case, log=os.path.join(case, "log.blockMesh"))
     rc, out = harness.run(["solidContactFoam"], cwd=case,
                           log=os.path.join(case, "log.solidContactFoam"))
-    wrote = [d for d in os.listdir(case) if re.fullmatch(r"[1-9][0-9.e+-]*", d)]
+    wrote = harness.times_written(case)
     ok = rc != 0 and "FOAM FATAL ERROR" in out and "J = det F" in out \
         and "Time 1: cell" in out and not wrote
     ck.add(name + "/stopped", ok, note="(rc=%d%s)" % (
