@@ -288,14 +288,16 @@ def hertz_prepare(level=1.0, method="lagrangeMultiplier", rebuild=None):
     return prepare
 
 
-def contact_free_prepare(contact):
-    """The contact-free equivalent of the converged hertzCylinder run
-    `contact` (copied with its mesh): its converged time brought in and
-    turned into 0/D by c4fpost.contactfree."""
+def contact_free_prepare(contact, slave="cylinderContact", master="blockContact",
+                         slave_traction=False):
+    """The contact-free equivalent of the converged contact run `contact`
+    (hertzCylinder's patches by default; copied with its mesh): its
+    converged time brought in and turned into 0/D by c4fpost.contactfree,
+    the slave held by its displacement or (slave_traction) its traction."""
     def prepare(case):
         t = foamio.latest_time(contact)
         shutil.copytree(os.path.join(contact, t), os.path.join(case, t))
-        contactfree.make_contact_free(case, t, "cylinderContact", "blockContact")
+        contactfree.make_contact_free(case, t, slave, master, slave_traction=slave_traction)
     return prepare
 
 
@@ -1234,14 +1236,9 @@ def unstructured_bench():
             res = module.compare(r["case"])
             pk = res["checks"][0]
             peak = (pk["value"] - pk["reference"]) / pk["reference"]
-            time_ = foamio.latest_time(r["case"])
-            frees = []
-            for tag, st in (("_free", False), ("_freeTT", True)):
-                def prepare(c, t=time_, src=r["case"], st=st):
-                    # bench_case copies no time directory: the converged one
-                    shutil.copytree(os.path.join(src, t), os.path.join(c, t))
-                    contactfree.make_contact_free(c, t, slave, master, slave_traction=st)
-                frees.append(bench_case(name + tag, r["case"], prepare=prepare))
+            frees = [bench_case(name + tag, r["case"], prepare=contact_free_prepare(
+                r["case"], slave, master, slave_traction=st))
+                for tag, st in (("_free", False), ("_freeTT", True))]
             cells = len(foamio.cell_centres_volumes(r["case"])[1])
             print("%-20s %-18s %6s %8d %+8.2f%% %8.2f%% %6d %13s %8.1f %13s" % (
                 tutorial, " ".join(opts[1:]) or "-", level, cells,
@@ -1295,14 +1292,10 @@ def gamg_bench():
             lines.append("| %s | contact run did not converge | | | | | | |" % label)
             print("%-22s contact run did not converge" % label)
             continue
-        t = foamio.latest_time(ref["case"])
-        free = []
-        for kind, st in (("free: u slave, t master", False), ("free: t both", True)):
-            def prepare(c, st=st):
-                shutil.copytree(os.path.join(ref["case"], t), os.path.join(c, t))
-                contactfree.make_contact_free(c, t, slave, master, slave_traction=st)
-            free.append((kind, bench_case(tag + ("_freeTT" if st else "_freeUT"), ref["case"],
-                                          prepare=prepare)))
+        free = [(kind, bench_case(tag + ("_freeTT" if st else "_freeUT"), ref["case"],
+                                  prepare=contact_free_prepare(ref["case"], slave, master,
+                                                               slave_traction=st)))
+                for kind, st in (("free: u slave, t master", False), ("free: t both", True))]
         ok = [f for _, f in free if f["converged"] and f["linear"]]
         for kind, r in runs + free:
             if not r["converged"] or not r["linear"]:
