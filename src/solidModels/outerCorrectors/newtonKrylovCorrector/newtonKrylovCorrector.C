@@ -74,6 +74,7 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     linearIterations_(2),
     fdStep_(1e-7),
     maxBacktracks_(4),
+    maxNewtonSteps_(50),
     backtrackOnChange_(true),
     forcing_(true),
     normPrevious_(0),
@@ -158,6 +159,13 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     maxBacktracks_ = readCount
     (
         "maxBacktracks", 4, 0, "the line search's halvings"
+    );
+
+    maxNewtonSteps_ = readCount
+    (
+        "maxNewtonSteps", 50, 1,
+        "the Newton steps of a load step before it goes on with the"
+        " segregated correctors"
     );
 
     backtrackOnChange_ =

@@ -57,6 +57,22 @@ Foam::frictionModels::coulomb::coulomb
 }
 
 
+Foam::scalar Foam::frictionModels::coulomb::normalPressure
+(
+    const contactSlaveState& state,
+    const label facei
+) const
+{
+    if (state_["contactStick"][facei] < 0)
+    {
+        // Open at the last decision: lambda_N = 0, the primal-dual trial
+        // is the penetration's, c (-g_N)
+        return max(-state.pairStiffness[facei]*state.constraintGap[facei], 0);
+    }
+    return state.reaction[facei];
+}
+
+
 void Foam::frictionModels::coulomb::correct
 (
     const contactSlaveState& state,
@@ -84,7 +100,7 @@ void Foam::frictionModels::coulomb::correct
             c4fConvert::toEigen(n),
             c4fConvert::toEigen(tangential(n, state.traction[facei])),
             c4fConvert::toEigen(tangentialGap(state, cond, facei)),
-            state.reaction[facei],
+            normalPressure(state, facei),
             mu_,
             state.pairStiffness[facei]
         );
