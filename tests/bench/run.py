@@ -105,8 +105,10 @@ step (mean and largest), linear iterations, wall time per load step and
 its ratio, and the normal force's relative difference between the two;
 hertzCylinder at -refine 1 and 2, the same with nu = 0.49 in both bodies,
 hertzSphere, hertzSphereTets, contactPatchTest, finiteStrainPatchTest
-(frictionless and with Coulomb) and shallowIroning (Coulomb under finite
-deformation, 100 steps; dF_N at its last); markdown in newton.md.
+(frictionless and with Coulomb), shallowIroning (Coulomb under finite
+deformation, 100 steps; dF_N at its last), rigidSphere and rigidPunch
+(rigid tools; Newton solves with GAMG where the tutorial has PCG);
+markdown in newton.md.
 
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
@@ -1607,7 +1609,9 @@ NEWTON_CASES = (("hertzCylinder", [], None, "cylinderContact"),
                 ("contactPatchTest", [], None, "lowerTop"),
                 ("finiteStrainPatchTest", [], None, "lowerTop"),
                 ("finiteStrainPatchTest", ["-friction", "coulomb"], None, "lowerTop"),
-                ("shallowIroning", [], None, "foundationContact"))
+                ("shallowIroning", [], None, "foundationContact"),
+                ("rigidSphere", [], None, "blockTop"),
+                ("rigidPunch", [], None, "blockTop"))
 
 
 def newton_log(case):

@@ -237,20 +237,6 @@ int main(int argc, char *argv[])
     bool newtonNow = newton;
     label nSegregated = 0;
 
-    // Rigid tools: GMRES stalled at 0.1 to 0.5 of the residual after 100
-    // products on most Newton steps of rigidSphere and rigidPunch (neither
-    // finished its first step in 150 and 600 s; the segregated loop takes
-    // seconds); refused until the products there are understood
-    if (newton && contactStateReporter::againstRigidTool(D))
-    {
-        FatalIOErrorInFunction(solidControls)
-            << "Entry 'algorithm' = newtonKrylov in " << solidControls.name()
-            << " is not supported against a rigid tool (a solidContact"
-            << " patch with a rigidSurface): its Krylov solves stall there."
-            << " Valid here: algorithm segregated (the default)"
-            << exit(FatalIOError);
-    }
-
     // The stress of the current D (grad D, sigma; P under finite
     // deformation), which the next assembly's explicit part takes
     const auto updateStress = [&]()

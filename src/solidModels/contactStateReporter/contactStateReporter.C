@@ -218,14 +218,4 @@ bool Foam::contactStateReporter::limitsSteps(const volVectorField& D)
 }
 
 
-bool Foam::contactStateReporter::againstRigidTool(const volVectorField& D)
-{
-    return anyReporter
-    (
-        D,
-        [](const contactStateReporter& rep) { return rep.againstRigidTool(); }
-    );
-}
-
-
 // ************************************************************************* //
