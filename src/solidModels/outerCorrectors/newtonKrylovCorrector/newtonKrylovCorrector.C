@@ -72,7 +72,7 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     state_(D),
     gmres_(),
     linearIterations_(2),
-    fdStep_(1e-7),
+    fdStep_(1e-9),
     maxBacktracks_(4),
     maxNewtonSteps_(50),
     substituted_(false),
@@ -146,14 +146,14 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
         );
     }
 
-    fdStep_ = coeffs.getOrDefault<scalar>("finiteDifferenceStep", 1e-7);
+    fdStep_ = coeffs.getOrDefault<scalar>("finiteDifferenceStep", 1e-9);
     if (!(fdStep_ > 0 && fdStep_ < 1e-2))
     {
         bad
         (
             "finiteDifferenceStep", Foam::name(fdStep_),
             "it must lie in (0, 0.01) (the finite-difference step relative"
-            " to |x|; 1e-7 by default)"
+            " to |x|; 1e-9 by default)"
         );
     }
 
