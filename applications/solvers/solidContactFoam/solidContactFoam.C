@@ -100,8 +100,9 @@ Description
     `correctors` counts every corrector, GMRES's products included. The
     first corrector of a load step is a segregated one (a full solve: the
     load increment and the contact it causes before the first Newton
-    step), but with the barrier. A step that has not converged in maxNewtonSteps Newton steps
-    goes on with the segregated correctors (`acceleration`, full solves).
+    step), but with the barrier. A step that has not converged in
+    maxNewtonSteps Newton steps goes on with the segregated correctors
+    (`acceleration`, full solves).
 
     Each step prints one summary line:
         Time = <t>  correctors = <n>  residual = <r>  [contact state]
@@ -317,14 +318,14 @@ int main(int argc, char *argv[])
 
         do
         {
-            if (newton && nCorr == 1 && !newtonLoop.exhausted())
-            {
-                newtonNow = true;
-            }
-            if (newtonNow && newtonLoop.exhausted())
+            const bool newtonBefore = newtonNow;
+            newtonNow =
+                newton
+             && (nCorr > 0 || newtonFromStart)
+             && !newtonLoop.exhausted();
+            if (newtonBefore && !newtonNow)
             {
                 // From the last Newton iterate, a new history
-                newtonNow = false;
                 acceleration.reset();
             }
             nSegregated += (newton && !newtonNow && nCorr > 0);
