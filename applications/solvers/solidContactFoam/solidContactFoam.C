@@ -97,12 +97,12 @@ Description
     Jacobian-free Newton-Krylov loop on the same corrector instead
     (newtonKrylovCorrector): the corrector's solve then takes a fixed
     number of GAMG cycles, the convergence test is the same, and
-    `correctors` counts every corrector, GMRES's products included. The
-    first corrector of a load step is a segregated one (a full solve: the
-    load increment and the contact it causes before the first Newton
-    step), but with the barrier. A step that has not converged in
-    maxNewtonSteps Newton steps goes on with the segregated correctors
-    (`acceleration`, full solves).
+    `correctors` counts every corrector, GMRES's products included. A
+    load step starts with segregated correctors (`acceleration`, full
+    solves: the load increment and the contact decisions it causes) until
+    one leaves the contact state unchanged, at most maxSegregatedStart of
+    them, but with the barrier. A step that has not converged in
+    maxNewtonSteps Newton steps goes on with the segregated correctors.
 
     Each step prints one summary line:
         Time = <t>  correctors = <n>  residual = <r>  [contact state]
@@ -235,19 +235,23 @@ int main(int argc, char *argv[])
     const bool newton = newtonKrylovCorrector::selected(solidControls);
     newtonKrylovCorrector newtonLoop(solidControls, D);
 
-    // Whether this corrector is Newton's. The first corrector of a load
-    // step is a segregated one (a full solve): it applies the load
-    // increment, so that the contact decisions the first Newton step is
-    // made with see the penetration it causes (from the open or last
-    // step's state, that step was the contact-free one: hertzCylinder 17
-    // Newton steps against 15, the finite-strain patch test 9 against 5).
-    // Not with a method that limits the updates (the barrier): its
-    // hertzCylinder run then crept towards the gaps' zero, step limit
-    // after step limit, until a face reached it. A load step that takes
-    // more than maxNewtonSteps goes on with the segregated correctors
-    const bool newtonFromStart =
-        newton && contactStateReporter::limitsSteps(D);
-    bool newtonNow = newtonFromStart;
+    // Whether this corrector is Newton's. A load step starts with segregated
+    // correctors (the user's solver and acceleration): they apply the load
+    // increment and settle the contact decisions, and Newton takes over
+    // after the first (but the first) that leaves the contact state
+    // unchanged, or after maxSegregatedStart (newtonKrylovCorrector). From
+    // a state whose set the first solve decides, Newton's steps revised it
+    // a face at a time (hertzCylinder 15 Newton steps after one segregated
+    // corrector, 4 after the settled start). Not with a method that limits
+    // the updates (the barrier): its hertzCylinder run then crept towards
+    // the gaps' zero, step limit after step limit, until a face reached
+    // it. A load step that takes more than maxNewtonSteps goes on with the
+    // segregated correctors
+    if (newton && contactStateReporter::limitsSteps(D))
+    {
+        newtonLoop.startWithNewton();
+    }
+    bool newtonNow = false;
     label nSegregated = 0;
 
     // The stress of the current D (grad D, sigma; P under finite
@@ -313,22 +317,19 @@ int main(int argc, char *argv[])
 
         acceleration.reset();
         newtonLoop.reset();
-        newtonNow = newtonFromStart;
+        newtonNow = false;
         nSegregated = 0;
 
         do
         {
             const bool newtonBefore = newtonNow;
-            newtonNow =
-                newton
-             && (nCorr > 0 || newtonFromStart)
-             && !newtonLoop.exhausted();
+            newtonNow = newton && newtonLoop.newtonNext();
             if (newtonBefore && !newtonNow)
             {
                 // From the last Newton iterate, a new history
                 acceleration.reset();
             }
-            nSegregated += (newton && !newtonNow && nCorr > 0);
+            nSegregated += (newton && newtonLoop.exhausted());
 
             D.storePrevIter();
             acceleration.storeIterate();
@@ -412,10 +413,12 @@ int main(int argc, char *argv[])
             {
                 // The next iterate is the accelerated one (a new active
                 // set starts a new history)
-                acceleration.accelerate
-                (
-                    contactStateReporter::activeSetChanged(D)
-                );
+                const bool changed = contactStateReporter::activeSetChanged(D);
+                if (newton && !newtonLoop.exhausted())
+                {
+                    newtonLoop.startCorrector(changed);
+                }
+                acceleration.accelerate(changed);
             }
 
             // A method that keeps every gap positive (barrier) limits the
@@ -488,7 +491,8 @@ int main(int argc, char *argv[])
             Info<< "    newtonKrylov: " << newtonLoop.nNewton()
                 << " Newton steps, " << newtonLoop.nProducts()
                 << " products, " << newtonLoop.nKrylovFailures()
-                << " GMRES solves unconverged";
+                << " GMRES solves unconverged, after "
+                << newtonLoop.nStart() << " segregated correctors";
             if (nSegregated)
             {
                 Info<< ", then " << nSegregated << " segregated correctors";

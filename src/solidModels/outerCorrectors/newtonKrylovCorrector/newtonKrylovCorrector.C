@@ -75,6 +75,10 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     fdStep_(1e-9),
     maxBacktracks_(4),
     maxNewtonSteps_(50),
+    maxSegregatedStart_(30),
+    fromStart_(false),
+    nStart_(0),
+    settled_(false),
     substituted_(false),
     backtrackOnChange_(true),
     forcing_(true),
@@ -169,6 +173,14 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
         " segregated correctors"
     );
 
+    maxSegregatedStart_ = readCount
+    (
+        "maxSegregatedStart", 30, 1,
+        "the segregated correctors a load step starts with at most; Newton"
+        " takes over after the first that leaves the contact state"
+        " unchanged"
+    );
+
     backtrackOnChange_ =
         coeffs.getOrDefault<bool>("backtrackOnChange", true);
     forcing_ = coeffs.getOrDefault<bool>("adaptiveForcing", true);
@@ -179,12 +191,17 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::dictionary Foam::newtonKrylovCorrector::solverControls
+const Foam::dictionary& Foam::newtonKrylovCorrector::solverControls
 (
     const dictionary& userControls
 ) const
 {
-    dictionary d(userControls);
+    if (controls_.valid())
+    {
+        return controls_();
+    }
+    controls_.reset(new dictionary(userControls));
+    dictionary& d = controls_();
 
     // A Krylov solver's iterations are not a linear map of the residual
     // (its step lengths are ratios of inner products of it), so its
@@ -228,6 +245,9 @@ Foam::dictionary Foam::newtonKrylovCorrector::solverControls
 
 void Foam::newtonKrylovCorrector::reset()
 {
+    controls_.clear();
+    nStart_ = 0;
+    settled_ = false;
     normPrevious_ = 0;
     etaPrevious_ = 0;
     xBase_.clear();
