@@ -235,18 +235,10 @@ int main(int argc, char *argv[])
     const bool newton = newtonKrylovCorrector::selected(solidControls);
     newtonKrylovCorrector newtonLoop(solidControls, D);
 
-    // Whether this corrector is Newton's. A load step starts with segregated
-    // correctors (the user's solver and acceleration): they apply the load
-    // increment and settle the contact decisions, and Newton takes over
-    // after the first (but the first) that leaves the contact state
-    // unchanged, or after maxSegregatedStart (newtonKrylovCorrector). From
-    // a state whose set the first solve decides, Newton's steps revised it
-    // a face at a time (hertzCylinder 15 Newton steps after one segregated
-    // corrector, 4 after the settled start). Not with a method that limits
-    // the updates (the barrier): its hertzCylinder run then crept towards
-    // the gaps' zero, step limit after step limit, until a face reached
-    // it. A load step that takes more than maxNewtonSteps goes on with the
-    // segregated correctors
+    // Whether this corrector is Newton's: newtonKrylovCorrector decides
+    // (the segregated start until the contact state settles, Newton from
+    // the first corrector with a method that limits the updates, the
+    // segregated correctors after maxNewtonSteps; its header says why)
     if (newton && contactStateReporter::limitsSteps(D))
     {
         newtonLoop.startWithNewton();
