@@ -8,6 +8,8 @@ skewed and tetrahedral cells:
     x < 0.8 a at most 1.5 % of p0 (comparePrisms.py);
   - hertzSphereTets (tetrahedra, about 10 slave faces across a): p_max
     within 4 %, RMS over r < 0.8 a at most 3 % of p0 (compareSphereTets.py);
+    on their polyhedral dual (-poly) the same over the faces of regular
+    size (its small faces are open: docs/validation.md);
   - contactPatchTestTets (each box meshed on its own, non-matching
     triangles at the interface): the exact method's stress and contact
     pressure uniform to 1e-6 (turned 30 degrees, and with nu 0.3, where the
@@ -41,6 +43,14 @@ def test_hertz_point_contact_on_tetrahedra():
     if ck.run(r, name):
         ck.vtk_written(r["case"], name,
                        ["D", "sigma", "contactPressure", "contactGap", "contactActive"])
+    ck.verify()
+
+
+def test_hertz_point_contact_on_polyhedra():
+    ck = harness.Checks()
+    name = "hertzSphereTetsPoly_" + LM
+    r = harness.tutorial_run("hertzSphereTets", name, ["-method", LM, "-poly"])
+    ck.run(r, name)
     ck.verify()
 
 
