@@ -1313,13 +1313,12 @@ def gamg_bench():
         # and without; and GaussSeidel, the smoother before: each against
         # the contact-free runs with its own smoother
         for smoother, runs in (
-                (None, [("coupled (default)", dict(edit=None)),
-                        ("fine level only", dict(edit=no_coarse_coupling))]),
-                ("GaussSeidel", [("coupled, GaussSeidel", dict(edit=gauss_seidel))])):
+                (None, [("coupled (default)", "_coupled", None),
+                        ("fine level only", "_fineOnly", no_coarse_coupling)]),
+                ("GaussSeidel", [("coupled, GaussSeidel", "_coupled", gauss_seidel)])):
             sub = "" if smoother is None else "_" + smoother
-            runs = [(kind, bench_case(tag + sub + ("_coupled" if i == 0 else "_fineOnly"),
-                                      src, allrun=args, **kw))
-                    for i, (kind, kw) in enumerate(runs)]
+            runs = [(kind, bench_case(tag + sub + suffix, src, allrun=args, edit=edit))
+                    for kind, suffix, edit in runs]
             ref = runs[0][1]
             if not ref["converged"]:
                 lines.append("| %s | %s did not converge | | | | | | |" % (label, runs[0][0]))

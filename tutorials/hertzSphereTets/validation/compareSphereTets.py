@@ -72,11 +72,15 @@ RMS_TOL = 0.03            # fraction of p0, faces with r < RMS_SPAN a
 RMS_SPAN = 0.8
 
 
-def edge_lengths(case, patch):
-    """The mean edge length of every face of a patch."""
+def patch_faces(case, patch):
+    """The point lists of a patch's faces."""
     start, n = foamio.boundary_patches(case)[patch]
+    return foamio.read_faces(case)[start:start + n]
+
+
+def edge_lengths(case, faces):
+    """The mean edge length of every face of `faces` (point lists)."""
     points = foamio.read_points(case)
-    faces = foamio.read_faces(case)[start:start + n]
     return np.array([np.linalg.norm(points[f] - points[np.roll(f, -1)], axis=1).mean()
                      for f in faces])
 
@@ -91,17 +95,16 @@ def compare(case, time=None):
     n = Cf.shape[0]
     area = np.linalg.norm(Sf, axis=1)
     ny = np.abs(Sf[:, 1]) / area
-    edge = edge_lengths(case, SLAVE)
+    faces = patch_faces(case, SLAVE)
+    edge = edge_lengths(case, faces)
+    # The polyhedral dual: polygons, not triangles
+    poly = any(len(f) > 3 for f in faces)
     p = foamio.read_patch(os.path.join(case, time, "contactPressure"), SLAVE, n)
     active = foamio.read_patch(os.path.join(case, time, "contactActive"), SLAVE, n) > 0.5
     r = np.hypot(Cf[:, 0], Cf[:, 2])
     order = np.argsort(r)
     r, p, active, area, ny, edge = (r[order], p[order], active[order], area[order],
                                     ny[order], edge[order])
-
-    # The polyhedral dual: polygons, not triangles
-    start, _ = foamio.boundary_patches(case)[SLAVE]
-    poly = any(len(f) > 3 for f in foamio.read_faces(case)[start:start + n])
 
     P = SYMMETRY * float(np.sum(p * area * ny))
     if not active.any() or P <= 0:
