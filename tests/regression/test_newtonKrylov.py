@@ -31,12 +31,14 @@ def newton_steps(case):
 
 def newton_ran(ck, r, name, steps=1):
     """The log holds one newtonKrylov line per load step (`steps` of them),
-    each with at least one Newton step and every GMRES solve converged."""
+    each with at least one Newton step and every GMRES solve converged.
+    Returns newton_steps' list."""
     s = newton_steps(r["case"])
     ck.add(name + "/newton_steps", len(s) == steps and all(n >= 1 for n, _, _ in s),
            note="%s (Newton steps, products, unconverged) per load step" % s)
     ck.add(name + "/gmres_converged", bool(s) and all(u == 0 for _, _, u in s),
            note="%s" % s)
+    return s
 
 
 # Newton from the second corrector: the patch tests converge within the

@@ -82,8 +82,7 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     settled_(false),
     substituted_(false),
     backtrackOnChange_(true),
-    forcing_(true),
-    forcingWhileChanging_(false),
+    forcing_(forcingMode::always),
     normPrevious_(0),
     etaPrevious_(0),
     normBase_(0),
@@ -188,14 +187,14 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     // yes / no, or the Eisenstat-Walker forcing on the Newton steps whose
     // corrector changed the contact state only
     const word forcing = coeffs.getOrDefault<word>("adaptiveForcing", "yes");
-    forcingWhileChanging_ = (forcing == "whileChanging");
-    if (forcingWhileChanging_)
+    if (forcing == "whileChanging")
     {
-        forcing_ = true;
+        forcing_ = forcingMode::whileChanging;
     }
     else if (Switch(forcing, true).valid())
     {
-        forcing_ = Switch(forcing, true);
+        forcing_ =
+            Switch(forcing, true) ? forcingMode::always : forcingMode::never;
     }
     else
     {
@@ -393,8 +392,10 @@ void Foam::newtonKrylovCorrector::step
     // residual 3e-5, 5e-5, 9e-5, 8e-5 over four of them of eta 0.06 to
     // 0.1 while the set stood still, 10 with it (see the header)
     const bool adaptive =
-        forcing_
-     && (changed || !forcingWhileChanging_)
+        (
+            forcing_ == forcingMode::always
+         || (forcing_ == forcingMode::whileChanging && changed)
+        )
      && !contactStateReporter::limitsSteps(D_);
     if (adaptive && normPrevious_ > 0)
     {
