@@ -487,7 +487,13 @@ int main(int argc, char *argv[])
                 << newtonLoop.nStart() << " segregated correctors";
             if (nSegregated)
             {
-                Info<< ", then " << nSegregated << " segregated correctors";
+                Info<< ", then " << nSegregated << " segregated correctors"
+                    << (
+                           newtonLoop.abandoned()
+                         ? " from the best Newton iterate (a Newton trial"
+                           " ten times above its residual was rejected)"
+                         : ""
+                       );
             }
             Info<< endl;
         }

@@ -86,6 +86,8 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     normPrevious_(0),
     etaPrevious_(0),
     normBase_(0),
+    normBest_(GREAT),
+    abandoned_(false),
     alpha_(1),
     nBacktracks_(0),
     nNewton_(0),
@@ -276,6 +278,9 @@ void Foam::newtonKrylovCorrector::reset()
     xBase_.clear();
     dBase_.clear();
     normBase_ = 0;
+    xBest_.clear();
+    normBest_ = GREAT;
+    abandoned_ = false;
     alpha_ = 1;
     nBacktracks_ = 0;
     nNewton_ = 0;
@@ -330,6 +335,23 @@ void Foam::newtonKrylovCorrector::step
         }
         state_.scatter(xp_);
         return;
+    }
+
+    // Nonmonotone acceptance (the header): a trial the line search leaves
+    // ten times above the best Newton iterate of this load step is not a
+    // point to go on from; the segregated correctors take over from the
+    // best iterate
+    if (!dBase_.empty() && normF > 10*normBest_)
+    {
+        abandoned_ = true;
+        contactStateReporter::restoreCorrectorStates(D_, false);
+        state_.scatter(xBest_);
+        return;
+    }
+    if (normF < normBest_)
+    {
+        normBest_ = normF;
+        xBest_ = x_;
     }
 
     // A Newton step from x with the decisions its corrector took
