@@ -234,6 +234,19 @@ def test_finite_strain_cylinder_against_calculix():
     ck.verify()
 
 
+def test_finite_strain_cylinder_refine2():
+    """finiteStrainCylinder at -refine 2 (14340 cells): every step
+    converged and the force within 2 % of CalculiX's (measured 0.48 %).
+    With the smoothed normal an inverse-distance blend of the hit face's
+    points (not continuous across face edges) its second step stalled
+    between 1e-6 and 7e-6 with a steady active set; with mean value
+    coordinates every step converges in 36 to 46 correctors."""
+    ck = harness.Checks()
+    name = "finiteStrainCylinder_refine2"
+    ck.run(harness.tutorial_run("finiteStrainCylinder", name, ["-refine", "2"]), name)
+    ck.verify()
+
+
 def rigid_cylinder_run(method):
     return harness.tutorial_run("finiteStrainCylinder", "finiteStrainCylinder_rigid_" + method,
                                 ["-cylinder", "rigid", "-method", method])

@@ -5,8 +5,8 @@ along it, Coulomb mu = 0.3) on its coarse mesh (0.1 mm faces on the
 foundation's top). compareIroning.py checks that every step converged,
 the die's vertical force at the end of the press inside the published
 spread, the global friction ratio at t = 1.5 inside 0.30 to 0.40
-(measured 0.343) and the horizontal force smooth while the die slides
-(peak-to-peak 2.9 % of its mean, at most 5 %). A restart in the middle of
+(measured 0.361) and the horizontal force smooth while the die slides
+(peak-to-peak 4.0 % of its mean, at most 5 %). A restart in the middle of
 the slide continues as the run did: the friction state (stick points,
 slip, the faces that closed) survives the write. Under Newton-Krylov the
 run passes the same checks except the smoothness, and gives the
@@ -24,8 +24,8 @@ from regression.test_newtonKrylov import NEWTON, newton_ran
 
 TUTORIAL = "shallowIroning"
 # Under Newton-Krylov the sliding steps end on either of the two states of
-# the faces at the die's leading corner (the horizontal force up to 6.5 %
-# apart, 6.3 % peak to peak), so its smoothness is not checked there
+# the faces at the die's leading corner (the horizontal force up to 14.7 %
+# apart, 13 % peak to peak), so its smoothness is not checked there
 NEWTON_UNCHECKED = ("H_smooth_while_sliding",)
 
 
@@ -57,7 +57,7 @@ def test_shallow_ironing_restart_mid_slide():
     sliding steps: the die's force at each equals the uninterrupted run's
     to 1e-6 (measured 3e-8: both converge to a residual of 1e-7, and the
     state is written with 12 digits), in as many correctors to +-5
-    (measured the same, 185 a step)."""
+    (measured the same, 209 to 218 a step)."""
     ck = harness.Checks()
     r = _run()
     harness.need(r, "the shallowIroning run")
@@ -110,16 +110,20 @@ def test_shallow_ironing_newton():
     newtonKrylovCoeffs take full Newton steps, maxBacktracks 0, with the
     forcing loose only while the contact state changes, adaptiveForcing
     whileChanging): every step converged with every GMRES solve, in at
-    most 12 Newton steps (measured 5.6 a step and at most 11, on 3 of the
-    100 steps: issue 26's 10 is not met on this mesh; with the foundation's
-    0.2 mm faces it was, 4.4 and at most 10), the press's checks, and the
+    most 12 Newton steps (measured 5.5 a step and at most 12: issue 26's
+    10 is not met on this mesh; with the foundation's 0.2 mm faces it was,
+    4.4 and at most 10), the press's checks, and the
     segregated run's forces: to 1e-5 on every step of the press (measured
     3.9e-7), and while the die slides, where the discrete problem has two
     states of the faces at the die's leading corner (both converge and
     stay converged to a residual of 1e-11; Newton ends every other step on
-    the one with the lower force), within 12 % on every step and to 1e-5
-    on at least half of them (measured 6.5 % and 29 of 50, no step needing
-    maxNewtonSteps' fallback)."""
+    the one with the lower force), within 16 % on every step and to 1e-5
+    on at least half of them (measured 14.7 % and 32 of 50; one step, t =
+    1.64, ended with the segregated correctors after a rejected Newton
+    trial, none needed maxNewtonSteps' fallback). With the die's smoothed
+    normals of before 2026-11-29 (an inverse-distance blend, not
+    continuous) the two states were 6.5 % apart; with the face normals the
+    leading corner's kink is the whole angle between two faces."""
     ck = harness.Checks()
     name = TUTORIAL + "_newtonKrylov"
     r = harness.tutorial_run(TUTORIAL, name, NEWTON)
@@ -147,8 +151,8 @@ def test_shallow_ironing_newton():
         else:
             sliding += 1
             same += err <= 1e-5
-            ck.add("%s/slide_force_t%g" % (name, x["time"]), err <= 0.12,
-                   x["forceX"], ref["forceX"], err, 0.12)
+            ck.add("%s/slide_force_t%g" % (name, x["time"]), err <= 0.16,
+                   x["forceX"], ref["forceX"], err, 0.16)
     ck.add(name + "/slide_steps_equal", sliding == 50 and same >= 0.5 * sliding,
            note="(%d of %d sliding steps with both forces within 1e-5 of the segregated"
            " run's)" % (same, sliding))

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "contactPatchPair.H"
+#include "polygonInterpolation.H"
 #include "polygonOverlap.H"
 #include "normalGap.H"
 #include "eigenFoamConversions.H"
@@ -357,18 +358,17 @@ Eigen::Vector3d Foam::contactPatchPair::normalAt
         return masterNormals_[facei];
     }
 
+    // Mean value coordinates: on an edge they depend on its two points
+    // alone, so the normal is continuous from one face to the next
     const std::vector<int>& f = masterFaces_[facei];
-    const double tiny = 1e-12*(masterPoints_[f[0]] - masterPoints_[f[1]]).norm();
-
+    const std::vector<double> w
+    (
+        c4f::transfer::meanValueCoordinates(masterPolygon(facei), x)
+    );
     Eigen::Vector3d n(Eigen::Vector3d::Zero());
-    for (const int v : f)
+    for (size_t k = 0; k < f.size(); ++k)
     {
-        const double d = (x - masterPoints_[v]).norm();
-        if (d <= tiny)
-        {
-            return masterPointNormals_[v];
-        }
-        n += masterPointNormals_[v]/d;
+        n += w[k]*masterPointNormals_[f[k]];
     }
     const double mag = n.norm();
     return mag > 0 ? Eigen::Vector3d(n/mag) : masterNormals_[facei];
