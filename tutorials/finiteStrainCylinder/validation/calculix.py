@@ -6,9 +6,8 @@ The same plane-strain half-model as the tutorial: a cylinder R = 0.1 m
 (its lower quarter disc, centre (0, R)) on a block 0.2 x 0.2 m, both
 St Venant-Kirchhoff (CalculiX's *ELASTIC under NLGEOM: S = C : E) or, with
 --law neoHookean, CalculiX's *HYPERELASTIC, NEO HOOKE with the same shear
-and bulk moduli (its volumetric energy (J - 1)^2 / D1 is not the
-tutorial's lambda/2 (ln J)^2 - mu ln J: the two differ at finite volume
-change, so only the St Venant-Kirchhoff curves must agree).
+and bulk moduli (C10 = mu/2, D1 = 2/K: the tutorial's neoHookean takes
+the same energy with `form decoupled` in constant/mechanicalProperties).
 Thickness 0.01 m, so the forces are those of the tutorial's one-cell-thick
 mesh. The top of the cylinder goes down by 0.02 m in ten increments with
 x held; the block's bottom is clamped; x = 0 is a symmetry line.
