@@ -69,8 +69,8 @@ patch test for every method (correctors, stress error); markdown in
 friction.md, q's RMS against the faces across a in friction.png.
 
 Finite deformation (`run.py --only finiteStrain`, issue 22):
-finiteStrainCylinder's force on its mesh against a CalculiX curve made in
-this run (validation/calculix.py; the stored one without ccx),
+finiteStrainCylinder's force on its mesh and at -refine 2 against a
+CalculiX curve made in this run (validation/calculix.py; the stored one without ccx),
 and finiteStrainPatchTest's correctors for nu 0.3, 0.4 and 0.45.
 
 Large sliding (`run.py --only ironing`, issue 22): shallowIroning at
