@@ -114,7 +114,7 @@ def test_shallow_ironing_newton():
     10 is not met on this mesh; with the foundation's 0.2 mm faces it was,
     4.4 and at most 10), the press's checks, and the
     segregated run's forces: to 1e-5 on every step of the press (measured
-    3.9e-7), and while the die slides, where the discrete problem has two
+    3.6e-7), and while the die slides, where the discrete problem has two
     states of the faces at the die's leading corner (both converge and
     stay converged to a residual of 1e-11; Newton ends every other step on
     the one with the lower force), within 16 % on every step and to 1e-5
@@ -122,8 +122,8 @@ def test_shallow_ironing_newton():
     1.64, ended with the segregated correctors after a rejected Newton
     trial, none needed maxNewtonSteps' fallback). With the die's smoothed
     normals of before 2026-11-29 (an inverse-distance blend, not
-    continuous) the two states were 6.5 % apart; with the face normals the
-    leading corner's kink is the whole angle between two faces."""
+    continuous) the two states were 6.5 % apart (one run each; why the
+    face normals part them further was not looked into)."""
     ck = harness.Checks()
     name = TUTORIAL + "_newtonKrylov"
     r = harness.tutorial_run(TUTORIAL, name, NEWTON)
