@@ -7,6 +7,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Barycentric_coordinates_2/Mean_value_coordinates_2.h>
 
+#include <exception>
 #include <iterator>
 
 namespace
@@ -38,14 +39,58 @@ std::vector<double> nearestVertex
 
 std::vector<double> c4f::transfer::meanValueCoordinates
 (
-    const Polygon& p,
+    const Polygon& pIn,
     const Eigen::Vector3d& x
 )
 {
-    if (p.empty())
+    if (pIn.empty())
     {
         return {};
     }
+
+    // A vertex repeated next to itself (points merged within a tolerance)
+    // makes the polygon non-simple for CGAL, whose precondition would
+    // throw: such a vertex takes no weight of its own
+    Eigen::Vector3d lo(pIn.front()), hi(pIn.front());
+    for (const Eigen::Vector3d& v : pIn)
+    {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+    }
+    const double tol = 1e-12*(hi - lo).norm();
+    std::vector<size_t> kept;
+    kept.reserve(pIn.size());
+    for (size_t i = 0; i < pIn.size(); ++i)
+    {
+        if (kept.empty() || (pIn[i] - pIn[kept.back()]).norm() > tol)
+        {
+            kept.push_back(i);
+        }
+    }
+    if
+    (
+        kept.size() > 1
+     && (pIn[kept.front()] - pIn[kept.back()]).norm() <= tol
+    )
+    {
+        kept.pop_back();
+    }
+    if (kept.size() != pIn.size())
+    {
+        Polygon q;
+        for (const size_t i : kept)
+        {
+            q.push_back(pIn[i]);
+        }
+        const std::vector<double> wq(meanValueCoordinates(q, x));
+        std::vector<double> w(pIn.size(), 0.0);
+        for (size_t k = 0; k < kept.size(); ++k)
+        {
+            w[kept[k]] = wq[k];
+        }
+        return w;
+    }
+    const Polygon& p = pIn;
 
     // The in-plane frame: the longest edge, and the Newell normal crossed
     // with it (counter-clockwise vertices, as the normal is right-handed
@@ -87,10 +132,18 @@ std::vector<double> c4f::transfer::meanValueCoordinates
 
     std::vector<double> w;
     w.reserve(p.size());
-    CGAL::Barycentric_coordinates::mean_value_coordinates_2
-    (
-        poly, q, std::back_inserter(w), Kernel()
-    );
+    try
+    {
+        CGAL::Barycentric_coordinates::mean_value_coordinates_2
+        (
+            poly, q, std::back_inserter(w), Kernel()
+        );
+    }
+    catch (const std::exception&)
+    {
+        // A self-crossing face (CGAL's precondition: a simple polygon)
+        return nearestVertex(p, x);
+    }
 
     // Normalised again: CGAL's sum is one to round-off
     double sum = 0;

@@ -341,7 +341,8 @@ void Foam::newtonKrylovCorrector::step
     // ten times above the best Newton iterate of this load step is not a
     // point to go on from; the segregated correctors take over from the
     // best iterate
-    if (!dBase_.empty() && normF > 10*normBest_)
+    // (written so that a NaN |F|, a trial past J < 0, is rejected too)
+    if (!dBase_.empty() && !xBest_.empty() && !(normF <= 10*normBest_))
     {
         abandoned_ = true;
         contactStateReporter::restoreCorrectorStates(D_, false);

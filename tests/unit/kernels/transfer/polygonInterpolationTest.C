@@ -225,3 +225,31 @@ TEST(polygonInterpolation, degenerate)
         EXPECT_TRUE(std::isfinite(wi));
     }
 }
+
+
+TEST(polygonInterpolation, repeatedVertexAndSelfCrossing)
+{
+    // A vertex repeated (points merged within a tolerance): CGAL's
+    // precondition (a simple polygon) would throw; the repeat takes no
+    // weight and the rest are the triangle's barycentric coordinates
+    const Polygon rep{V(0, 0, 0), V(1, 0, 0), V(1, 0, 0), V(0, 1, 0)};
+    const std::vector<double> w(meanValueCoordinates(rep, V(0.2, 0.3, 0)));
+    ASSERT_EQ(w.size(), 4u);
+    EXPECT_NEAR(w[0], 0.5, 1e-12);
+    EXPECT_NEAR(w[1] + w[2], 0.2, 1e-12);
+    EXPECT_EQ(w[1]*w[2], 0);
+    EXPECT_NEAR(w[3], 0.3, 1e-12);
+    // The first point repeated at the end
+    const Polygon wrap{V(0, 0, 0), V(1, 0, 0), V(0, 1, 0), V(0, 0, 0)};
+    const std::vector<double> ww(meanValueCoordinates(wrap, V(0.2, 0.3, 0)));
+    ASSERT_EQ(ww.size(), 4u);
+    EXPECT_NEAR(ww[0] + ww[3], 0.5, 1e-12);
+    EXPECT_NEAR(ww[1], 0.2, 1e-12);
+    EXPECT_NEAR(ww[2], 0.3, 1e-12);
+    // A self-crossing quad with area: the nearest vertex, not an exception
+    const Polygon bow{V(0, 0, 0), V(2, 0, 0), V(0, 1, 0), V(1, 1, 0)};
+    const std::vector<double> wb(meanValueCoordinates(bow, V(1.9, 0.1, 0)));
+    ASSERT_EQ(wb.size(), 4u);
+    EXPECT_EQ(wb[1], 1);
+    EXPECT_NEAR(sum(wb), 1, 1e-12);
+}
