@@ -34,63 +34,15 @@ std::vector<double> nearestVertex
     return w;
 }
 
-} // End anonymous namespace
 
-
-std::vector<double> c4f::transfer::meanValueCoordinates
+//- The weights of a polygon without repeated vertices
+std::vector<double> simplePolygonWeights
 (
-    const Polygon& pIn,
+    const c4f::transfer::Polygon& p,
     const Eigen::Vector3d& x
 )
 {
-    if (pIn.empty())
-    {
-        return {};
-    }
-
-    // A vertex repeated next to itself (points merged within a tolerance)
-    // makes the polygon non-simple for CGAL, whose precondition would
-    // throw: such a vertex takes no weight of its own
-    Eigen::Vector3d lo(pIn.front()), hi(pIn.front());
-    for (const Eigen::Vector3d& v : pIn)
-    {
-        lo = lo.cwiseMin(v);
-        hi = hi.cwiseMax(v);
-    }
-    const double tol = 1e-12*(hi - lo).norm();
-    std::vector<size_t> kept;
-    kept.reserve(pIn.size());
-    for (size_t i = 0; i < pIn.size(); ++i)
-    {
-        if (kept.empty() || (pIn[i] - pIn[kept.back()]).norm() > tol)
-        {
-            kept.push_back(i);
-        }
-    }
-    if
-    (
-        kept.size() > 1
-     && (pIn[kept.front()] - pIn[kept.back()]).norm() <= tol
-    )
-    {
-        kept.pop_back();
-    }
-    if (kept.size() != pIn.size())
-    {
-        Polygon q;
-        for (const size_t i : kept)
-        {
-            q.push_back(pIn[i]);
-        }
-        const std::vector<double> wq(meanValueCoordinates(q, x));
-        std::vector<double> w(pIn.size(), 0.0);
-        for (size_t k = 0; k < kept.size(); ++k)
-        {
-            w[kept[k]] = wq[k];
-        }
-        return w;
-    }
-    const Polygon& p = pIn;
+    using namespace c4f::transfer;
 
     // The in-plane frame: the longest edge, and the Newell normal crossed
     // with it (counter-clockwise vertices, as the normal is right-handed
@@ -158,6 +110,63 @@ std::vector<double> c4f::transfer::meanValueCoordinates
     for (double& wi : w)
     {
         wi /= sum;
+    }
+    return w;
+}
+
+} // End anonymous namespace
+
+
+std::vector<double> c4f::transfer::meanValueCoordinates
+(
+    const Polygon& p,
+    const Eigen::Vector3d& x
+)
+{
+    if (p.empty())
+    {
+        return {};
+    }
+
+    // A vertex repeated next to itself (points merged within a tolerance)
+    // makes the polygon non-simple for CGAL, whose precondition would
+    // throw: such a vertex takes no weight of its own
+    Eigen::Vector3d lo(p.front()), hi(p.front());
+    for (const Eigen::Vector3d& v : p)
+    {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+    }
+    const double tol = 1e-12*(hi - lo).norm();
+    std::vector<size_t> kept;
+    kept.reserve(p.size());
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        if (kept.empty() || (p[i] - p[kept.back()]).norm() > tol)
+        {
+            kept.push_back(i);
+        }
+    }
+    if (kept.size() > 1 && (p[kept.front()] - p[kept.back()]).norm() <= tol)
+    {
+        kept.pop_back();
+    }
+    if (kept.size() == p.size())
+    {
+        return simplePolygonWeights(p, x);
+    }
+
+    Polygon q;
+    q.reserve(kept.size());
+    for (const size_t i : kept)
+    {
+        q.push_back(p[i]);
+    }
+    const std::vector<double> wq(simplePolygonWeights(q, x));
+    std::vector<double> w(p.size(), 0.0);
+    for (size_t k = 0; k < kept.size(); ++k)
+    {
+        w[kept[k]] = wq[k];
     }
     return w;
 }
