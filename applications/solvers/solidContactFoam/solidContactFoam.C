@@ -489,7 +489,11 @@ int main(int argc, char *argv[])
             {
                 Info<< ", then " << nSegregated << " segregated correctors"
                     << (
-                           newtonLoop.abandoned()
+                           newtonLoop.stalled()
+                         ? " from the best Newton iterate (Newton stalled:"
+                           " no smaller residual in maxStalledSteps Newton"
+                           " steps)"
+                         : newtonLoop.abandoned()
                          ? " from the best Newton iterate (a Newton trial"
                            " ten times above its residual was rejected)"
                          : ""

@@ -76,6 +76,7 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     fdStep_(1e-9),
     maxBacktracks_(4),
     maxNewtonSteps_(50),
+    maxStalledSteps_(8),
     maxSegregatedStart_(30),
     fromStart_(false),
     nStart_(0),
@@ -87,7 +88,9 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     etaPrevious_(0),
     normBase_(0),
     normBest_(GREAT),
+    nBest_(0),
     abandoned_(false),
+    stalled_(false),
     alpha_(1),
     nBacktracks_(0),
     nNewton_(0),
@@ -174,6 +177,14 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
         "maxNewtonSteps", 50, 1,
         "the Newton steps of a load step before it goes on with the"
         " segregated correctors"
+    );
+
+    maxStalledSteps_ = readCount
+    (
+        "maxStalledSteps", 8, 1,
+        "the Newton steps without a new smallest residual of the load step"
+        " before it goes on with the segregated correctors from the best"
+        " iterate"
     );
 
     maxSegregatedStart_ = readCount
@@ -280,7 +291,9 @@ void Foam::newtonKrylovCorrector::reset()
     normBase_ = 0;
     xBest_.clear();
     normBest_ = GREAT;
+    nBest_ = 0;
     abandoned_ = false;
+    stalled_ = false;
     alpha_ = 1;
     nBacktracks_ = 0;
     nNewton_ = 0;
@@ -353,6 +366,17 @@ void Foam::newtonKrylovCorrector::step
     {
         normBest_ = normF;
         xBest_ = x_;
+        nBest_ = nNewton_;
+    }
+    else if (nNewton_ - nBest_ >= maxStalledSteps_)
+    {
+        // Stalled (see the header): the residual has not gone below its
+        // best for maxStalledSteps Newton steps
+        stalled_ = true;
+        abandoned_ = true;
+        contactStateReporter::restoreCorrectorStates(D_, false);
+        state_.scatter(xBest_);
+        return;
     }
 
     // A Newton step from x with the decisions its corrector took
