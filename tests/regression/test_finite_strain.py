@@ -260,6 +260,22 @@ def test_finite_strain_cylinder_refine2():
     ck.verify()
 
 
+def test_finite_strain_cylinder_nagata():
+    """finiteStrainCylinder -normals nagata: the block's deformed top as
+    Nagata patches through its points and point normals (the gap, the
+    projection and the normal of one curved surface): every step
+    converged and the force within 2 % of CalculiX's (measured 0.25 %, in
+    406 correctors against the smoothed normals' 357). Before the edge
+    coefficient was bounded by |d| phi, the seventh step stalled at 5e-6
+    (a patch at the contact's edge, whose point normals were nearly
+    parallel but leaned 0.3 degrees against the chord, looped and turned
+    its normal by up to 27 degrees from one corrector to the next)."""
+    ck = harness.Checks()
+    name = "finiteStrainCylinder_nagata"
+    ck.run(harness.tutorial_run("finiteStrainCylinder", name, ["-normals", "nagata"]), name)
+    ck.verify()
+
+
 def rigid_cylinder_run(method):
     return harness.tutorial_run("finiteStrainCylinder", "finiteStrainCylinder_rigid_" + method,
                                 ["-cylinder", "rigid", "-method", method])

@@ -109,7 +109,7 @@ void Foam::contactCorrector::build
             new contactPatchPair
             (
                 slave, *master, settings.searchDistance(),
-                settings.smoothedNormals(), settings.rebuildTolerance()
+                settings.normals(), settings.rebuildTolerance()
             )
         );
     }

@@ -16,6 +16,8 @@
 #include "globalIndex.H"
 #include "Map.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactPatchPair::contactPatchPair
@@ -23,7 +25,7 @@ Foam::contactPatchPair::contactPatchPair
     const fvPatch& slave,
     const fvPatch& master,
     const scalar searchDistance,
-    const bool smoothNormals,
+    const word& normals,
     const scalar rebuildTolerance
 )
 :
@@ -31,7 +33,8 @@ Foam::contactPatchPair::contactPatchPair
     master_(master),
     self_(slave.index() == master.index()),
     searchDistance_(searchDistance),
-    smoothNormals_(smoothNormals),
+    smoothNormals_(normals != "faces"),
+    nagata_(normals == "nagata"),
     masterFaceSize_(0),
     surfaceGathered_(false),
     rebuildTolerance_(rebuildTolerance),
@@ -344,6 +347,22 @@ void Foam::contactPatchPair::moveMaster(const vectorField& masterD)
             masterPointNormals_[pointi] = mag > 0 ? Eigen::Vector3d(n/mag) : n;
         }
     }
+
+    if (nagata_)
+    {
+        masterPatches_.clear();
+        masterPatches_.reserve(masterFaces_.size());
+        std::vector<Eigen::Vector3d> pn;
+        for (size_t facei = 0; facei < masterFaces_.size(); ++facei)
+        {
+            pn.clear();
+            for (const int v : masterFaces_[facei])
+            {
+                pn.push_back(masterPointNormals_[v]);
+            }
+            masterPatches_.emplace_back(masterPolygon(facei), pn);
+        }
+    }
 }
 
 
@@ -356,6 +375,12 @@ Eigen::Vector3d Foam::contactPatchPair::normalAt
     if (!smoothNormals_)
     {
         return masterNormals_[facei];
+    }
+
+    if (nagata_ && masterPatches_[facei].valid())
+    {
+        const Eigen::Vector3d n(masterPatches_[facei].closest(x).normal);
+        return n.norm() > 0 ? n : masterNormals_[facei];
     }
 
     // Mean value coordinates: on an edge they depend on its two points
@@ -372,6 +397,108 @@ Eigen::Vector3d Foam::contactPatchPair::normalAt
     }
     const double mag = n.norm();
     return mag > 0 ? Eigen::Vector3d(n/mag) : masterNormals_[facei];
+}
+
+
+c4f::search::SearchHit Foam::contactPatchPair::closestCurved
+(
+    const Eigen::Vector3d& q,
+    const c4f::search::SearchHit& flat,
+    Eigen::Vector3d& normal
+) const
+{
+    // The curved surface lies within a quarter of a face's size of the
+    // flat one (an edge's coefficient is at most the edge long, its curve
+    // within a quarter of that of the chord), so its closest point is on
+    // a face within that of the flat hit's distance
+    const std::vector<Eigen::Vector3d> hitPoly(masterPolygon(flat.face));
+    double size = 0;
+    for (const Eigen::Vector3d& p : hitPoly)
+    {
+        size = std::max(size, (p - hitPoly[0]).norm());
+    }
+    const double reach = flat.distance + 0.5*size + 2*staleness_;
+    std::vector<int> cand
+    (
+        search_.facesInBox
+        (
+            q - Eigen::Vector3d::Constant(reach),
+            q + Eigen::Vector3d::Constant(reach)
+        )
+    );
+    if (std::find(cand.begin(), cand.end(), flat.face) == cand.end())
+    {
+        cand.push_back(flat.face);
+    }
+
+    // Nearest first by a lower bound of each patch's distance: that of
+    // its points' box grown by a quarter of its diameter (as above), so
+    // that the farther patches need no projection
+    std::vector<std::pair<double, int>> order;
+    order.reserve(cand.size());
+    for (const int j : cand)
+    {
+        const std::vector<int>& f = masterFaces_[j];
+        Eigen::Vector3d lo(masterPoints_[f[0]]), hi(lo);
+        for (const int v : f)
+        {
+            lo = lo.cwiseMin(masterPoints_[v]);
+            hi = hi.cwiseMax(masterPoints_[v]);
+        }
+        const Eigen::Vector3d out
+        (
+            (lo - q).cwiseMax(q - hi).cwiseMax(0.0)
+        );
+        order.emplace_back(out.norm() - 0.25*(hi - lo).norm(), j);
+    }
+    std::sort(order.begin(), order.end());
+
+    c4f::search::SearchHit best;
+    bool bestInside = false;
+    normal = masterNormals_[flat.face];
+    const Eigen::Vector3d& nHit = masterNormals_[flat.face];
+    const double tie = 1e-9*size;
+    for (const std::pair<double, int>& o : order)
+    {
+        const int j = o.second;
+        if (best.found && o.first > best.distance + tie)
+        {
+            break;
+        }
+        const c4f::search::NagataPatch& patch = masterPatches_[j];
+        if (!patch.valid() || masterNormals_[j].dot(nHit) <= 0)
+        {
+            // Only faces that face the way the hit face does; a polygon
+            // of more than four points keeps its flat face (the hit)
+            continue;
+        }
+        const c4f::search::NagataProjection proj(patch.closest(q));
+
+        // The nearest point of the patches; of two at one point (an edge
+        // the two patches share) the one inside its patch, whose normal
+        // is that of the surface's closest point
+        const bool better =
+            !best.found
+         || proj.distance < best.distance - tie
+         || (
+                proj.distance < best.distance + tie
+             && proj.inside && !bestInside
+            );
+        if (better && proj.normal.norm() > 0)
+        {
+            best.found = true;
+            best.face = j;
+            best.point = proj.point;
+            best.distance = proj.distance;
+            bestInside = proj.inside;
+            normal = proj.normal;
+        }
+    }
+    if (!best.found)
+    {
+        return flat;
+    }
+    return best;
 }
 
 
@@ -639,11 +766,20 @@ void Foam::contactPatchPair::update
             hit = closest(q);
         }
 
+        Eigen::Vector3d nCurved(Eigen::Vector3d::Zero());
+        if (nagata_ && !self_ && hit.found)
+        {
+            hit = closestCurved(q, hit, nCurved);
+        }
+
         inRange_[facei] = hit.found;
         if (hit.found)
         {
             hitFace_[facei] = hit.face;
-            const Eigen::Vector3d n(normalAt(hit.face, hit.point));
+            const Eigen::Vector3d n
+            (
+                nCurved.norm() > 0 ? nCurved : normalAt(hit.face, hit.point)
+            );
             hitNormal_[facei] = c4fConvert::toFoam(n);
             gap_[facei] = (q - hit.point).dot(n);
 
@@ -704,6 +840,28 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
             c4fConvert::toFoam(Eigen::Vector3d(ns.normalized()));
         const auto faceGap = [&](const label j, const Eigen::Vector3d& c)
         {
+            if (nagata_ && masterPatches_[j].valid())
+            {
+                // The tangent plane of the face's patch at c, moved by
+                // the face's own value less the points' (so that the
+                // master's own face values stay in the gap, as below)
+                const c4f::search::NagataProjection proj
+                (
+                    masterPatches_[j].closest(c)
+                );
+                const Eigen::Vector3d shift
+                (
+                    c4fConvert::toEigen
+                    (
+                        vector(masterRefCentres_[j] + masterFaceD_[j])
+                    )
+                  - c4f::transfer::polygonCentroid(masterPolygon(j))
+                );
+                return c4f::contact::planeGap
+                (
+                    c, proj.point + shift, proj.normal, xs, ns
+                );
+            }
             return c4f::contact::planeGap
             (
                 c,

@@ -45,12 +45,14 @@ void Foam::contactSettings::checkPatch
         }
     }
 
-    if (normals_ != "faces" && normals_ != "smoothed")
+    if (normals_ != "faces" && normals_ != "smoothed" && normals_ != "nagata")
     {
         FatalIOErrorInFunction(dict)
             << "Invalid normals " << normals_ << " in " << dict.name()
-            << ": valid are faces (the master face normal) and smoothed"
-            << " (interpolated point normals)" << exit(FatalIOError);
+            << ": valid are faces (the master face normal), smoothed"
+            << " (interpolated point normals) and nagata (the gap and the"
+            << " normal of a curved surface through the master points)"
+            << exit(FatalIOError);
     }
 
     if (!contactConstraintGroups::sideNames.found(constraintFaces_))
