@@ -101,13 +101,19 @@ NagataPatch::NagataPatch
 }
 
 
-Eigen::Vector3d NagataPatch::point(const Eigen::Vector2d& p) const
+Eigen::Vector3d NagataPatch::offset(const Eigen::Vector2d& p) const
 {
     const double e = p(0);
     const double z = p(1);
     return
-        c_[0] + c_[1]*e + c_[2]*z + c_[3]*e*z + c_[4]*e*e + c_[5]*z*z
+        c_[1]*e + c_[2]*z + c_[3]*e*z + c_[4]*e*e + c_[5]*z*z
       + c_[6]*e*e*z + c_[7]*e*z*z;
+}
+
+
+Eigen::Vector3d NagataPatch::point(const Eigen::Vector2d& p) const
+{
+    return c_[0] + offset(p);
 }
 
 
@@ -221,6 +227,11 @@ NagataProjection NagataPatch::closest
         return proj;
     }
 
+    // Relative to the first corner: a face far from the origin for its
+    // size keeps the distances' digits (else round-off in x hides the
+    // last 1e-8 of the face size from the line search)
+    const Eigen::Vector3d qr(q - c_[0]);
+
     // d^2 f/dp^2 of f = |x - q|^2/2 along the directions a and b
     const auto hessian = [&](const Eigen::Vector2d& p, const Eigen::Vector3d& r)
     {
@@ -238,11 +249,11 @@ NagataProjection NagataPatch::closest
     // most a quarter of the domain and halved until f does not grow
     Eigen::Vector2d p(start);
     clamp(p);
-    double f = (point(p) - q).squaredNorm();
+    double f = (offset(p) - qr).squaredNorm();
     bool converged = false;
     for (int iter = 0; iter < 50 && !converged; ++iter)
     {
-        const Eigen::Vector3d r(point(p) - q);
+        const Eigen::Vector3d r(offset(p) - qr);
         const Eigen::Matrix<double, 3, 2> J(tangents(p));
         const Eigen::Vector2d g(J.transpose()*r);
         Eigen::Matrix2d H(hessian(p, r));
@@ -264,11 +275,11 @@ NagataProjection NagataPatch::closest
         {
             step *= 0.25/step.norm();
         }
-        double fn = (point(p + step) - q).squaredNorm();
+        double fn = (offset(p + step) - qr).squaredNorm();
         for (int half = 0; half < 40 && fn > f; ++half)
         {
             step *= 0.5;
-            fn = (point(p + step) - q).squaredNorm();
+            fn = (offset(p + step) - qr).squaredNorm();
         }
         if (fn > f)
         {
@@ -286,7 +297,8 @@ NagataProjection NagataPatch::closest
     }
 
     Eigen::Vector2d inDomain(p);
-    const bool inside = converged && clamp(inDomain);
+    const bool inDomainIterate = clamp(inDomain);
+    const bool inside = converged && inDomainIterate;
     if (inside)
     {
         proj.param = p;
@@ -321,7 +333,7 @@ NagataProjection NagataPatch::closest
             const Eigen::Vector2d& b = e.second;
             const auto fAt = [&](const double t)
             {
-                return (point(a + t*b) - q).squaredNorm();
+                return (offset(a + t*b) - qr).squaredNorm();
             };
             double t = 0;
             double ft = fAt(0);
@@ -336,7 +348,7 @@ NagataProjection NagataPatch::closest
             for (int iter = 0; iter < 50; ++iter)
             {
                 const Eigen::Vector2d pt(a + t*b);
-                const Eigen::Vector3d r(point(pt) - q);
+                const Eigen::Vector3d r(offset(pt) - qr);
                 const double g = r.dot(tangents(pt)*b);
                 const double h = b.dot(hessian(pt, r)*b);
                 const double hGN = (tangents(pt)*b).squaredNorm();
@@ -373,11 +385,19 @@ NagataProjection NagataPatch::closest
             }
         }
         proj.inside = false;
+
+        // An interior iterate Newton left unconverged (a point far from
+        // the patch for its size) that is nearer than every edge is kept
+        if (inDomainIterate && f < best)
+        {
+            proj.param = p;
+            proj.inside = true;
+        }
     }
 
     proj.point = point(proj.param);
     proj.normal = normal(proj.param);
-    proj.distance = (proj.point - q).norm();
+    proj.distance = (offset(proj.param) - qr).norm();
     return proj;
 }
 

@@ -407,17 +407,13 @@ c4f::search::SearchHit Foam::contactPatchPair::closestCurved
     Eigen::Vector3d& normal
 ) const
 {
-    // The curved surface lies within a quarter of a face's size of the
-    // flat one (an edge's coefficient is at most the edge long, its curve
-    // within a quarter of that of the chord), so its closest point is on
-    // a face within that of the flat hit's distance
-    const std::vector<Eigen::Vector3d> hitPoly(masterPolygon(flat.face));
-    double size = 0;
-    for (const Eigen::Vector3d& p : hitPoly)
-    {
-        size = std::max(size, (p - hitPoly[0]).norm());
-    }
-    const double reach = flat.distance + 0.5*size + 2*staleness_;
+    // A patch lies within half its diameter of its flat face (an edge's
+    // coefficient is at most the edge long, a quad's interior within half
+    // of the largest, a triangle's within a third), so the surface's
+    // closest point is on a face within half the largest master face of
+    // the flat hit's distance; the whole of the largest reference face
+    // leaves room for faces stretched since
+    const double reach = flat.distance + masterFaceSize_ + 2*staleness_;
     std::vector<int> cand
     (
         search_.facesInBox
@@ -432,8 +428,8 @@ c4f::search::SearchHit Foam::contactPatchPair::closestCurved
     }
 
     // Nearest first by a lower bound of each patch's distance: that of
-    // its points' box grown by a quarter of its diameter (as above), so
-    // that the farther patches need no projection
+    // its points' box less half its diagonal (as above), so that the
+    // farther patches need no projection
     std::vector<std::pair<double, int>> order;
     order.reserve(cand.size());
     for (const int j : cand)
@@ -449,7 +445,7 @@ c4f::search::SearchHit Foam::contactPatchPair::closestCurved
         (
             (lo - q).cwiseMax(q - hi).cwiseMax(0.0)
         );
-        order.emplace_back(out.norm() - 0.25*(hi - lo).norm(), j);
+        order.emplace_back(out.norm() - 0.5*(hi - lo).norm(), j);
     }
     std::sort(order.begin(), order.end());
 
@@ -457,7 +453,8 @@ c4f::search::SearchHit Foam::contactPatchPair::closestCurved
     bool bestInside = false;
     normal = masterNormals_[flat.face];
     const Eigen::Vector3d& nHit = masterNormals_[flat.face];
-    const double tie = 1e-9*size;
+    const double tie = 1e-9*masterFaceSize_;
+    std::vector<Eigen::Vector3d> pts;
     for (const std::pair<double, int>& o : order)
     {
         const int j = o.second;
@@ -465,14 +462,41 @@ c4f::search::SearchHit Foam::contactPatchPair::closestCurved
         {
             break;
         }
-        const c4f::search::NagataPatch& patch = masterPatches_[j];
-        if (!patch.valid() || masterNormals_[j].dot(nHit) <= 0)
+        if (masterNormals_[j].dot(nHit) <= 0)
         {
-            // Only faces that face the way the hit face does; a polygon
-            // of more than four points keeps its flat face (the hit)
+            // Only faces that face the way the hit face does
             continue;
         }
-        const c4f::search::NagataProjection proj(patch.closest(q));
+
+        c4f::search::NagataProjection proj;
+        const c4f::search::NagataPatch& patch = masterPatches_[j];
+        if (patch.valid())
+        {
+            proj = patch.closest(q);
+        }
+        else
+        {
+            // A polygon of more than four points is its flat face
+            pts.clear();
+            std::vector<std::vector<int>> face(1);
+            for (const int v : masterFaces_[j])
+            {
+                face[0].push_back(int(pts.size()));
+                pts.push_back(masterPoints_[v]);
+            }
+            const c4f::search::SearchHit h
+            (
+                c4f::search::bruteForceClosest(pts, face, q, GREAT)
+            );
+            if (!h.found)
+            {
+                continue;
+            }
+            proj.point = h.point;
+            proj.distance = h.distance;
+            proj.normal = masterNormals_[j];
+            proj.inside = true;
+        }
 
         // The nearest point of the patches; of two at one point (an edge
         // the two patches share) the one inside its patch, whose normal
@@ -849,6 +873,22 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
                 (
                     masterPatches_[j].closest(c)
                 );
+                if (!(proj.normal.norm() > 0))
+                {
+                    // A degenerate patch point (a collapsed edge): the
+                    // face's plane
+                    return c4f::contact::planeGap
+                    (
+                        c,
+                        c4fConvert::toEigen
+                        (
+                            vector(masterRefCentres_[j] + masterFaceD_[j])
+                        ),
+                        masterNormals_[j],
+                        xs,
+                        ns
+                    );
+                }
                 const Eigen::Vector3d shift
                 (
                     c4fConvert::toEigen

@@ -368,7 +368,7 @@ void Foam::newtonKrylovCorrector::step
         xBest_ = x_;
         nBest_ = nNewton_;
     }
-    else if (nNewton_ - nBest_ >= maxStalledSteps_)
+    else if (!xBest_.empty() && nNewton_ - nBest_ >= maxStalledSteps_)
     {
         // Stalled (see the header): the residual has not gone below its
         // best for maxStalledSteps Newton steps

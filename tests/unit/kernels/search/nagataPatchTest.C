@@ -388,3 +388,32 @@ TEST(NagataPatch, InvalidFacesAndRepeatedPoints)
     EXPECT_TRUE(std::isfinite(proj.distance));
     EXPECT_NEAR(proj.point.z(), 0.03, 0.05);
 }
+
+
+TEST(NagataPatch, SmallFaceFarFromTheOrigin)
+{
+    // A face 1e-3 across at 1e3 from the origin (the coordinates 1e6
+    // times the face): the closest point of a point above its interior
+    // is inside and orthogonal, not an edge's
+    const V o(1e3, -2e3, 5e2);
+    std::vector<V> x;
+    const NagataPatch unit(sphereQuad(1, 0.2, x));
+    std::vector<V> y, n;
+    for (const V& p : x)
+    {
+        y.push_back(o + 5e-3*p);
+        n.push_back(p.normalized());
+    }
+    const NagataPatch s(y, n);
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> u(0.1, 0.9), r(0.9, 1.1);
+    for (int k = 0; k < 50; ++k)
+    {
+        const P p(u(gen), u(gen));
+        const V q(o + (s.point(p) - o)*r(gen));
+        const NagataProjection proj(s.closest(q));
+        EXPECT_TRUE(proj.inside);
+        const V dx(q - proj.point);
+        EXPECT_LT((dx - dx.dot(proj.normal)*proj.normal).norm(), 1e-9*5e-3);
+    }
+}
