@@ -864,55 +864,38 @@ void Foam::contactPatchPair::computeOverlaps(const vectorField& x)
             c4fConvert::toFoam(Eigen::Vector3d(ns.normalized()));
         const auto faceGap = [&](const label j, const Eigen::Vector3d& c)
         {
+            const Eigen::Vector3d xm
+            (
+                c4fConvert::toEigen
+                (
+                    vector(masterRefCentres_[j] + masterFaceD_[j])
+                )
+            );
             if (nagata_ && masterPatches_[j].valid())
             {
                 // The tangent plane of the face's patch at c, moved by
                 // the face's own value less the points' (so that the
-                // master's own face values stay in the gap, as below)
+                // master's own face values stay in the gap, as below);
+                // at a degenerate patch point (a collapsed edge, no
+                // normal) the face's plane
                 const c4f::search::NagataProjection proj
                 (
                     masterPatches_[j].closest(c)
                 );
-                if (!(proj.normal.norm() > 0))
+                if (proj.normal.norm() > 0)
                 {
-                    // A degenerate patch point (a collapsed edge): the
-                    // face's plane
                     return c4f::contact::planeGap
                     (
                         c,
-                        c4fConvert::toEigen
-                        (
-                            vector(masterRefCentres_[j] + masterFaceD_[j])
-                        ),
-                        masterNormals_[j],
+                        proj.point + xm
+                      - c4f::transfer::polygonCentroid(masterPolygon(j)),
+                        proj.normal,
                         xs,
                         ns
                     );
                 }
-                const Eigen::Vector3d shift
-                (
-                    c4fConvert::toEigen
-                    (
-                        vector(masterRefCentres_[j] + masterFaceD_[j])
-                    )
-                  - c4f::transfer::polygonCentroid(masterPolygon(j))
-                );
-                return c4f::contact::planeGap
-                (
-                    c, proj.point + shift, proj.normal, xs, ns
-                );
             }
-            return c4f::contact::planeGap
-            (
-                c,
-                c4fConvert::toEigen
-                (
-                    vector(masterRefCentres_[j] + masterFaceD_[j])
-                ),
-                masterNormals_[j],
-                xs,
-                ns
-            );
+            return c4f::contact::planeGap(c, xm, masterNormals_[j], xs, ns);
         };
 
         // Candidates: master faces near the slave polygon, the box grown by
