@@ -454,7 +454,6 @@ c4f::search::SearchHit Foam::contactPatchPair::closestCurved
     normal = masterNormals_[flat.face];
     const Eigen::Vector3d& nHit = masterNormals_[flat.face];
     const double tie = 1e-9*masterFaceSize_;
-    std::vector<Eigen::Vector3d> pts;
     for (const std::pair<double, int>& o : order)
     {
         const int j = o.second;
@@ -477,17 +476,7 @@ c4f::search::SearchHit Foam::contactPatchPair::closestCurved
         else
         {
             // A polygon of more than four points is its flat face
-            pts.clear();
-            std::vector<std::vector<int>> face(1);
-            for (const int v : masterFaces_[j])
-            {
-                face[0].push_back(int(pts.size()));
-                pts.push_back(masterPoints_[v]);
-            }
-            const c4f::search::SearchHit h
-            (
-                c4f::search::bruteForceClosest(pts, face, q, GREAT)
-            );
+            const c4f::search::SearchHit h(closestOnFace(j, q, GREAT));
             if (!h.found)
             {
                 continue;
@@ -1001,7 +990,6 @@ c4f::search::SearchHit Foam::contactPatchPair::closestSelf
     );
 
     c4f::search::SearchHit best;
-    std::vector<Eigen::Vector3d> pts;
     for (const int j : cand)
     {
         const Eigen::Vector3d& nm = masterNormals_[j];
@@ -1009,15 +997,10 @@ c4f::search::SearchHit Foam::contactPatchPair::closestSelf
         {
             continue;
         }
-        pts.clear();
-        std::vector<std::vector<int>> face(1);
-        for (const int v : masterFaces_[j])
-        {
-            face[0].push_back(int(pts.size()));
-            pts.push_back(masterPoints_[v]);
-        }
-        c4f::search::SearchHit hit =
-            c4f::search::bruteForceClosest(pts, face, q, searchDistance_);
+        const c4f::search::SearchHit hit
+        (
+            closestOnFace(j, q, searchDistance_)
+        );
         if
         (
             !hit.found
@@ -1030,10 +1013,35 @@ c4f::search::SearchHit Foam::contactPatchPair::closestSelf
         {
             continue;
         }
-        hit.face = j;
         best = hit;
     }
     return best;
+}
+
+
+c4f::search::SearchHit Foam::contactPatchPair::closestOnFace
+(
+    const label j,
+    const Eigen::Vector3d& q,
+    const scalar maxDistance
+) const
+{
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<std::vector<int>> face(1);
+    for (const int v : masterFaces_[j])
+    {
+        face[0].push_back(int(pts.size()));
+        pts.push_back(masterPoints_[v]);
+    }
+    c4f::search::SearchHit hit
+    (
+        c4f::search::bruteForceClosest(pts, face, q, maxDistance)
+    );
+    if (hit.found)
+    {
+        hit.face = j;
+    }
+    return hit;
 }
 
 
