@@ -55,7 +55,8 @@ NagataPatch::NagataPatch
     const std::vector<Eigen::Vector3d>& n
 )
 :
-    n_(0)
+    n_(0),
+    bulge_(0)
 {
     for (Eigen::Vector3d& c : c_)
     {
@@ -82,6 +83,7 @@ NagataPatch::NagataPatch
         c_[5] = c4;
         c_[6] = c3 - c1;
         c_[7] = c2 - c4;
+        bulge_ = 0.25*(c1.norm() + c2.norm() + c3.norm() + c4.norm());
         n_ = 4;
     }
     else
@@ -96,6 +98,7 @@ NagataPatch::NagataPatch
         c_[3] = c3 - c1 - c2;
         c_[4] = c1;
         c_[5] = c2;
+        bulge_ = 0.25*(c1.norm() + c2.norm() + c3.norm());
         n_ = 3;
     }
 }

@@ -417,3 +417,62 @@ TEST(NagataPatch, SmallFaceFarFromTheOrigin)
         EXPECT_LT((dx - dx.dot(proj.normal)*proj.normal).norm(), 1e-9*5e-3);
     }
 }
+
+
+TEST(NagataPatch, BulgeBoundsTheDistanceFromTheCornersInterpolation)
+{
+    // Random faces with random unit corner normals (up to the edge cap,
+    // then at it): over a parameter grid the patch stays within bulge()
+    // of the bilinear (quad) or linear (triangle) interpolation of its
+    // corners, and the bound is not loose by more than its four terms
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        const int n = trial % 2 ? 3 : 4;
+        std::vector<V> x
+        {
+            V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(0, 1, 0)
+        };
+        x.resize(n);
+        std::vector<V> nrm;
+        for (V& p : x)
+        {
+            p += 0.2*V(u(gen), u(gen), u(gen));
+            const double lean = trial < 100 ? 0.3 : 1.5;
+            nrm.push_back((V(0, 0, 1) + lean*V(u(gen), u(gen), 0)).normalized());
+        }
+        const NagataPatch s(x, nrm);
+        ASSERT_TRUE(s.valid());
+        double most = 0;
+        for (int i = 0; i <= 20; ++i)
+        {
+            for (int j = 0; j <= 20; ++j)
+            {
+                const double e = i/20.0, z = j/20.0;
+                V lin;
+                if (n == 4)
+                {
+                    lin = (1 - e)*(1 - z)*x[0] + e*(1 - z)*x[1] + e*z*x[2]
+                        + (1 - e)*z*x[3];
+                }
+                else
+                {
+                    if (z > e)
+                    {
+                        continue;
+                    }
+                    lin = x[0] + (x[1] - x[0])*e + (x[2] - x[1])*z;
+                }
+                most = std::max(most, (s.point(P(e, z)) - lin).norm());
+            }
+        }
+        EXPECT_LE(most, s.bulge()*(1 + 1e-12) + 1e-15) << "trial " << trial;
+        EXPECT_GE(most, s.bulge()/(4*n)) << "trial " << trial;
+    }
+
+    // Flat faces and straight extrusion edges: no bulge
+    const std::vector<V> flat{V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(0, 1, 0)};
+    const std::vector<V> up(4, V(0, 0, 1));
+    EXPECT_EQ(NagataPatch(flat, up).bulge(), 0.0);
+}
