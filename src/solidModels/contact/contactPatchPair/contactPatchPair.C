@@ -484,7 +484,7 @@ c4f::search::SearchHit Foam::contactPatchPair::closestCurved
         else
         {
             // A polygon of more than four points is its flat face
-            const c4f::search::SearchHit h(closestOnFace(j, q, GREAT));
+            const c4f::search::SearchHit h(closestOnFaces({j}, q, GREAT));
             if (!h.found)
             {
                 continue;
@@ -550,27 +550,7 @@ c4f::search::SearchHit Foam::contactPatchPair::closest
         )
     );
 
-    // The candidates as a small surface of their own, current points
-    std::vector<Eigen::Vector3d> pts;
-    std::vector<std::vector<int>> faces;
-    for (const int facei : cand)
-    {
-        std::vector<int> f;
-        for (const int v : masterFaces_[facei])
-        {
-            f.push_back(int(pts.size()));
-            pts.push_back(masterPoints_[v]);
-        }
-        faces.push_back(f);
-    }
-
-    c4f::search::SearchHit hit =
-        c4f::search::bruteForceClosest(pts, faces, q, searchDistance_);
-    if (hit.found)
-    {
-        hit.face = cand[hit.face];
-    }
-    return hit;
+    return closestOnFaces(cand, q, searchDistance_);
 }
 
 
@@ -1007,7 +987,7 @@ c4f::search::SearchHit Foam::contactPatchPair::closestSelf
         }
         const c4f::search::SearchHit hit
         (
-            closestOnFace(j, q, searchDistance_)
+            closestOnFaces({j}, q, searchDistance_)
         );
         if
         (
@@ -1027,27 +1007,31 @@ c4f::search::SearchHit Foam::contactPatchPair::closestSelf
 }
 
 
-c4f::search::SearchHit Foam::contactPatchPair::closestOnFace
+c4f::search::SearchHit Foam::contactPatchPair::closestOnFaces
 (
-    const label j,
+    const std::vector<int>& cand,
     const Eigen::Vector3d& q,
     const scalar maxDistance
 ) const
 {
+    // The candidates as a small surface of their own, current points
     std::vector<Eigen::Vector3d> pts;
-    std::vector<std::vector<int>> face(1);
-    for (const int v : masterFaces_[j])
+    std::vector<std::vector<int>> faces(cand.size());
+    for (std::size_t k = 0; k < cand.size(); ++k)
     {
-        face[0].push_back(int(pts.size()));
-        pts.push_back(masterPoints_[v]);
+        for (const int v : masterFaces_[cand[k]])
+        {
+            faces[k].push_back(int(pts.size()));
+            pts.push_back(masterPoints_[v]);
+        }
     }
     c4f::search::SearchHit hit
     (
-        c4f::search::bruteForceClosest(pts, face, q, maxDistance)
+        c4f::search::bruteForceClosest(pts, faces, q, maxDistance)
     );
     if (hit.found)
     {
-        hit.face = j;
+        hit.face = cand[hit.face];
     }
     return hit;
 }
