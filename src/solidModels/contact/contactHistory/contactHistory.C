@@ -105,7 +105,9 @@ Foam::contactHistory::contactHistory
             << " 2.7.3); valid friction models with it are frictionless"
             << " and stick" << exit(FatalIOError);
     }
-    if (method_->augmentsMultipliers())
+    // A tangential multiplier only where a tied face's law is the normal
+    // law's compliance about it (an exact tie has none to augment)
+    if (method_->augmentsMultipliers() && !method_->exactTangentialTie())
     {
         friction_->augmentMultipliers();
     }
