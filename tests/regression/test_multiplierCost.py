@@ -48,16 +48,22 @@ def test_in_loop_methods_listed():
     for t, a in CASES])
 @pytest.mark.parametrize("method", IN_LOOP)
 def test_multiplier_method_costs_the_multiplier(method, tutorial, args):
+    _costs_the_multiplier("multiplierCost", "correctors_against_LM", method, tutorial, args)
+
+
+def _costs_the_multiplier(prefix, check, method, tutorial, args):
+    """The tutorial's runs prefix_<tutorial>_<m> with LM and method, each
+    passing its own checks; method's correctors at most COST times LM's."""
     ck = harness.Checks()
     runs_ = {}
     for m in (LM, method):
-        name = "multiplierCost_%s_%s" % (tutorial, m)
+        name = "%s_%s_%s" % (prefix, tutorial, m)
         r = harness.tutorial_run(tutorial, name, ["-method", m] + args)
         if not ck.run(r, name):
             ck.verify()
         runs_[m] = harness.total_correctors(harness.need(r, name))
     ratio = runs_[method]/float(runs_[LM])
-    ck.add("%s_%s/correctors_against_LM" % (tutorial, method), ratio <= COST, ratio, 1.0,
+    ck.add("%s_%s/%s" % (tutorial, method, check), ratio <= COST, ratio, 1.0,
            ratio, COST, note="(%d against %d)" % (runs_[method], runs_[LM]))
     ck.verify()
 
@@ -83,15 +89,5 @@ def test_augmented_method_with_friction_costs_the_multiplier(method, tutorial, a
     """Coulomb (cattaneoMindlin's partial slip, slidingBlock's full slip)
     and stick (the sheared patch test): at most COST times LM's
     correctors, every check of the tutorial passing."""
-    ck = harness.Checks()
-    runs_ = {}
-    for m in (LM, method):
-        name = "multiplierCostFriction_%s_%s" % (tutorial, m)
-        r = harness.tutorial_run(tutorial, name, ["-method", m] + args)
-        if not ck.run(r, name):
-            ck.verify()
-        runs_[m] = harness.total_correctors(harness.need(r, name))
-    ratio = runs_[method]/float(runs_[LM])
-    ck.add("%s_%s/friction_correctors_against_LM" % (tutorial, method), ratio <= COST,
-           ratio, 1.0, ratio, COST, note="(%d against %d)" % (runs_[method], runs_[LM]))
-    ck.verify()
+    _costs_the_multiplier("multiplierCostFriction", "friction_correctors_against_LM",
+                          method, tutorial, args)
