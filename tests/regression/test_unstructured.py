@@ -92,3 +92,28 @@ def test_patch_test_on_tetrahedra(method, opts):
     r = harness.tutorial_run("contactPatchTestTets", name, ["-method", method] + opts)
     ck.run(r, name)
     ck.verify()
+
+
+def test_secant_through_active_set_changes_on_skewed_prisms():
+    """andersonActiveSetChange secant on hertzCylinderPrisms (block slave,
+    skewed, -refine 1): the first solve presses 29 faces for 16, shed one a
+    corrector, where the default restart leaves every step of that phase
+    plain. Hertz's checks pass, the force is the default's to 1e-8 (both
+    converge to the tutorial's 1e-9) and it takes fewer correctors: 40
+    against 43 (2026-12-07); the same count fails, so a secant that does
+    nothing is caught."""
+    ck = harness.Checks()
+    runs_ = {}
+    for mode in ("restart", "secant"):
+        name = "hertzCylinderPrisms_activeSetChange_" + mode
+        r = harness.tutorial_run("hertzCylinderPrisms", name, ["-method", LM],
+                                 controls="andersonActiveSetChange %s;" % mode)
+        if not ck.run(r, name):
+            ck.verify()
+        runs_[mode] = r["case"]
+    harness.forces_agree(ck, runs_["secant"], runs_["restart"], "blockContact",
+                         "hertzCylinderPrisms_secant", 1e-8, "secant")
+    n = {m: harness.total_correctors(c) for m, c in runs_.items()}
+    ck.add("hertzCylinderPrisms_secant/fewer_correctors", n["secant"] < n["restart"],
+           n["secant"], n["restart"], n["secant"] - n["restart"], -1)
+    ck.verify()

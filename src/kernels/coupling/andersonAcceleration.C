@@ -144,6 +144,12 @@ void AndersonAcceleration::reset()
 }
 
 
+void AndersonAcceleration::clearColumns()
+{
+    clearHistory();
+}
+
+
 int AndersonAcceleration::freeSlot() const
 {
     for (int s = 0; s <= params_.depth; ++s)

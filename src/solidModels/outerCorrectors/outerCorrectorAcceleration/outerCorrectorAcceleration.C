@@ -21,6 +21,13 @@ const Foam::Enum<accelerationType> accelerationNames
     { accelerationType::anderson, "anderson" }
 });
 
+const Foam::Enum<Foam::outerCorrectorAcceleration::onActiveSetChange>
+    onChangeNames
+({
+    { Foam::outerCorrectorAcceleration::onActiveSetChange::restart, "restart" },
+    { Foam::outerCorrectorAcceleration::onActiveSetChange::secant, "secant" }
+});
+
 
 } // End anonymous namespace
 
@@ -34,7 +41,8 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
 )
 :
     state_(D),
-    anderson_()
+    anderson_(),
+    onChange_(onActiveSetChange::restart)
 {
     const word typeName
     (
@@ -99,6 +107,23 @@ Foam::outerCorrectorAcceleration::outerCorrectorAcceleration
         );
     }
 
+    // What a changed active set does to the history (checked whether or
+    // not it is used, as the depth)
+    const word onChangeName
+    (
+        solidControls.getOrDefault<word>("andersonActiveSetChange", "restart")
+    );
+    if (!onChangeNames.found(onChangeName))
+    {
+        FatalIOErrorInFunction(solidControls)
+            << "Entry 'andersonActiveSetChange' = " << onChangeName << " in "
+            << solidControls.name() << " is invalid: valid are restart (the"
+            << " default: the history and the last iterate are dropped) and"
+            << " secant (the columns are dropped, the last iterate kept)"
+            << exit(FatalIOError);
+    }
+    onChange_ = onChangeNames[onChangeName];
+
     if (accelerationNames[typeName] == accelerationType::none)
     {
         return;
@@ -140,11 +165,16 @@ void Foam::outerCorrectorAcceleration::accelerate(const bool restart)
         return;
     }
 
-    if (restart)
+    if (restart && onChange_ == onActiveSetChange::restart)
     {
         // D stays at G(x): the first step of the new history is plain
         anderson_->reset();
         return;
+    }
+    if (restart)
+    {
+        // The step from x is the secant through the change alone
+        anderson_->clearColumns();
     }
 
     state_.gather(g_);

@@ -879,6 +879,60 @@ TEST(AndersonAcceleration, ResetAndSizeChangeStartAfresh)
     EXPECT_EQ(aa.nColumns(), 1);
 }
 
+// An active set that changed: clearColumns() keeps the last iterate, so
+// the next update is the one-column secant through the change (checked
+// against the formula), where reset() gives a plain step; on a scalar
+// linear map that secant lands on the fixed point
+TEST(AndersonAcceleration, ClearColumnsKeepsTheIterateForOneSecant)
+{
+    const int n = 8;
+    LinearProblem lp(n, 11, 0.9);
+
+    AndersonAcceleration aa(params(4, 1.0));
+    const Vec xPrev = iterate(aa, lp.G, lp.x0, 5);
+    ASSERT_GT(aa.nColumns(), 1);
+    // The last update stored xPrev's predecessor; one more stores xPrev
+    const Vec rPrev = lp.G(xPrev) - xPrev;
+    const Vec x = step(aa, xPrev, lp.G(xPrev));
+
+    aa.clearColumns();
+    EXPECT_EQ(aa.nColumns(), 0);
+    EXPECT_EQ(aa.gamma().size(), 0);
+
+    const Vec r = lp.G(x) - x;
+    const Vec xNext = step(aa, x, lp.G(x));
+    ASSERT_EQ(aa.nColumns(), 1);
+    const Vec dr = r - rPrev, dx = x - xPrev;
+    const double gamma = dr.dot(r)/dr.dot(dr);
+    EXPECT_NEAR(aa.gamma()(0), gamma, 1e-12*std::abs(gamma));
+    EXPECT_LT((xNext - (x + r - (dx + dr)*gamma)).norm(), 1e-12*x.norm());
+
+    // Scalar: after clearColumns the secant is exact, after reset plain
+    const auto G1 = [](const double y) { return 0.95*y + 1.0; };
+    const double yStar = 20.0;
+    for (const bool clear : {true, false})
+    {
+        AndersonAcceleration a1(params(3, 1.0));
+        Vec y(1), g(1);
+        y << 3.0;
+        // One plain step: no column yet, but a stored iterate
+        g << G1(y(0));
+        y = step(a1, y, g);
+        ASSERT_EQ(a1.nColumns(), 0);
+        clear ? a1.clearColumns() : a1.reset();
+        g << G1(y(0));
+        const Vec yNext = step(a1, y, g);
+        if (clear)
+        {
+            EXPECT_NEAR(yNext(0), yStar, 1e-10);
+        }
+        else
+        {
+            EXPECT_EQ(yNext(0), g(0));
+        }
+    }
+}
+
 // A load step in which the map changes under the iteration (an active
 // set switching): the residual jumps, the guard restarts
 TEST(AndersonAcceleration, ResidualGrowthRestartsWhenAsked)
