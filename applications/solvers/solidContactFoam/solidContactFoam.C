@@ -58,7 +58,9 @@ Description
     that has not converged, D becomes the combination of the last
     andersonDepth + 1 iterates whose corrector residual is least. The
     history starts afresh with each load step and whenever a contact
-    patch changed its active set. With `andersonRestartGrowth g` it also
+    patch changed its active set (with `andersonActiveSetChange secant`
+    the iterate is kept: the next step is the secant through the change).
+    With `andersonRestartGrowth g` it also
     starts afresh when an accelerated corrector's residual |G(x) - x| is
     more than g times the one before (the secants described a map that is
     no longer there: a face at a sharp master corner that switched
@@ -127,6 +129,7 @@ Usage
         acceleration  | anderson or none                       | no       | anderson
         andersonDepth | difference columns kept (>= 1)         | no       | 15
         andersonRestartGrowth | restart when a step grows the residual by more (>= 1) | no | never
+        andersonActiveSetChange | restart, or secant: the step through an active-set change is a one-column secant (outerCorrectorAcceleration) | no | restart
         nonlinearGeometry | finite deformation (total Lagrangian) | no | no
         algorithm     | segregated or newtonKrylov             | no       | segregated
     \endtable
