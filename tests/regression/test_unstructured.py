@@ -103,11 +103,15 @@ def test_secant_through_active_set_changes_on_skewed_prisms():
     against 43 (2026-12-07); the same count fails, so a secant that does
     nothing is caught."""
     ck = harness.Checks()
+    # The default run is test_hertz_line_contact_on_skewed_prisms[yes]'s
+    # (made once a session, whichever test asks first)
     runs_ = {}
-    for mode in ("restart", "secant"):
-        name = "hertzCylinderPrisms_activeSetChange_" + mode
-        r = harness.tutorial_run("hertzCylinderPrisms", name, ["-method", LM],
-                                 controls="andersonActiveSetChange %s;" % mode)
+    for mode, name, controls in (
+            ("restart", "hertzCylinderPrisms_" + LM, ""),
+            ("secant", "hertzCylinderPrisms_activeSetChange_secant",
+             "andersonActiveSetChange secant;")):
+        r = harness.tutorial_run("hertzCylinderPrisms", name,
+                                 ["-method", LM, "-skew", "yes"], controls=controls)
         if not ck.run(r, name):
             ck.verify()
         runs_[mode] = r["case"]

@@ -165,14 +165,15 @@ void Foam::outerCorrectorAcceleration::accelerate(const bool restart)
         return;
     }
 
-    if (restart && onChange_ == onActiveSetChange::restart)
-    {
-        // D stays at G(x): the first step of the new history is plain
-        anderson_->reset();
-        return;
-    }
     if (restart)
     {
+        if (onChange_ == onActiveSetChange::restart)
+        {
+            // D stays at G(x): the first step of the new history is plain
+            anderson_->reset();
+            return;
+        }
+
         // The step from x is the secant through the change alone
         anderson_->clearColumns();
     }
