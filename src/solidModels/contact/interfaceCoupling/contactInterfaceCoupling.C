@@ -70,6 +70,25 @@ Foam::vector Foam::contactInterfaceCoupling::subFaceTraction
 }
 
 
+void Foam::contactInterfaceCoupling::cacheProductCoeffs()
+{
+    subCoeffs_.setSize(coeff_.size());
+    DynamicList<label> coupled(normal_.size());
+    forAll(normal_, i)
+    {
+        if (start_[i+1] > start_[i])
+        {
+            coupled.append(i);
+        }
+        for (label s = start_[i]; s < start_[i+1]; ++s)
+        {
+            subCoeffs_[s] = subFaceCoeffs(i, s);
+        }
+    }
+    coupledFaces_.transfer(coupled);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactInterfaceCoupling::contactInterfaceCoupling
@@ -213,6 +232,7 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     area_.transfer(area);
 
     setGroups(in, gRefs);
+    cacheProductCoeffs();
 
     if (in.D)
     {
@@ -479,11 +499,11 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::slaveDiag() const
 {
     tmp<vectorField> td(new vectorField(normal_.size(), Zero));
     vectorField& d = td.ref();
-    forAll(d, i)
+    for (const label i : coupledFaces_)
     {
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            d[i] += subFaceCoeffs(i, s);
+            d[i] += subCoeffs_[s];
         }
     }
     return td;
@@ -493,11 +513,11 @@ Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::slaveDiag() const
 Foam::tmp<Foam::vectorField> Foam::contactInterfaceCoupling::masterDiag() const
 {
     vectorField d(nMaster_, Zero);
-    forAll(normal_, i)
+    for (const label i : coupledFaces_)
     {
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            d[masterFace_[s]] += subFaceCoeffs(i, s);
+            d[masterFace_[s]] += subCoeffs_[s];
         }
     }
     return pair_.masterSum(d, tag_);
@@ -515,11 +535,11 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::slaveNeighbour
 
     tmp<scalarField> tnb(new scalarField(normal_.size(), 0));
     scalarField& nb = tnb.ref();
-    forAll(nb, i)
+    for (const label i : coupledFaces_)
     {
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            nb[i] += subFaceCoeffs(i, s)[cmpt]*psiM[masterFace_[s]];
+            nb[i] += subCoeffs_[s][cmpt]*psiM[masterFace_[s]];
         }
     }
     return tnb;
@@ -534,11 +554,11 @@ Foam::tmp<Foam::scalarField> Foam::contactInterfaceCoupling::masterNeighbour
 ) const
 {
     scalarField nb(nMaster_, 0);
-    forAll(normal_, i)
+    for (const label i : coupledFaces_)
     {
         for (label s = start_[i]; s < start_[i+1]; ++s)
         {
-            nb[masterFace_[s]] += subFaceCoeffs(i, s)[cmpt]*psi[fc[i]];
+            nb[masterFace_[s]] += subCoeffs_[s][cmpt]*psi[fc[i]];
         }
     }
     return pair_.masterSum(nb, tag_);
