@@ -45,11 +45,12 @@ against Hertz's a, not checked.
 The polyhedral dual (-poly; told from the slave's faces, polygons instead
 of triangles) has two kinds of slave face: the dual's faces about the
 tetrahedra's vertices, and small faces a fifth of their area or less
-between them (inside 0.8 a 49 of 103 faces at the tutorial's level),
-whose cells lean up to 65 degrees against them. The small faces carry
-the face-centre correction's first-order error magnified by the lean
-(their mean is +6.4 % of p0 above Hertz at this level, +4.0 % and +3.1 %
-at -refine 1.5 and 2): open (docs/validation.md). On the dual the two
+(inside 0.8 a 49 of 103 faces at the tutorial's level), all within half
+a face width of a symmetry plane: the faces of the cells the planes cut,
+two or three a cell, leaning up to 65 degrees. The small faces lie above
+Hertz (their mean +6.4 % of p0 at this level, +4.0 % and +3.1 % at
+-refine 1.5 and 2), with the plane rather than the lean: open
+(docs/validation.md). On the dual the two
 checks are made over the faces of regular size, at least half the median
 area of the faces inside 0.8 a, with the tetrahedra's tolerances; the
 peak and RMS over all faces are printed beside them.
