@@ -93,6 +93,12 @@ CASES = [
      [("system/fvSolution", r"^(\s*)tolerance\s+1e-9;",
        r"\1tolerance 1e-9; andersonRestartGrowth 0.5;")],
      ["FOAM FATAL IO ERROR", "Entry 'andersonRestartGrowth' = 0.5", ">= 1", "fvSolution"]),
+    # GAMG's direct coarsest-level solve (LUscalarMatrix) aborted on the
+    # contact interface with a refCast to cyclicLduInterface
+    ("directSolveCoarsestWithContact", "hertzCylinder",
+     [("system/fvSolution", r"^(\s*)solver\s+GAMG;", r"\1solver GAMG; directSolveCoarsest true;")],
+     ["FOAM FATAL IO ERROR", "Entry 'directSolveCoarsest' = true", "LUscalarMatrix",
+      "cylinderContact", "directSolveCoarsest false", "fvSolution"]),
     ("invalidAndersonActiveSetChange", "plateHole",
      [("system/fvSolution", r"^(\s*)tolerance\s+1e-9;",
        r"\1tolerance 1e-9; andersonActiveSetChange keep;")],

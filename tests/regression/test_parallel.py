@@ -210,3 +210,28 @@ def test_processor_without_contact_faces_equals_serial():
     if rc == 0:
         ck.displacements_agree(serial["case"], case, name + "/D_equals_serial", 1e-8)
     ck.verify()
+
+
+@pytest.mark.xdist_group("hertzCylinderParallel")
+def test_processor_agglomeration_refused_with_contact():
+    """GAMG's processorAgglomerator on 2 processors: it moves the coarse
+    levels' interfaces between processors through the GAMGInterface type
+    table, which has no contact interface ("Unknown GAMGInterface type
+    contactInterface" before): a FatalIOError naming the entry and the
+    contact patch, and no time directory on any processor."""
+    ck = harness.Checks()
+    name = "hertzCylinderProcessorAgglomerator"
+    case = harness.fresh_copy("hertzCylinder", name)
+    fv = os.path.join(case, "system/fvSolution")
+    edited = re.subn(r"^(\s*)solver\s+GAMG;",
+                     r"\1solver GAMG; processorAgglomerator masterCoarsest;",
+                     open(fv).read(), count=1, flags=re.M)
+    open(fv, "w").write(edited[0])
+    ok, note = harness.refused(case, ["-parallel"],
+                               ["'processorAgglomerator' = masterCoarsest", "cylinderContact",
+                                "Valid"])
+    wrote = [d for p in os.listdir(case) if p.startswith("processor")
+             for d in harness.times_written(os.path.join(case, p))]
+    ck.add(name + "/refused", ok and edited[1] == 1 and not wrote,
+           note=note + " processor times %s" % wrote)
+    ck.verify()

@@ -230,6 +230,7 @@ int main(int argc, char *argv[])
     #include "createContactMesh.H"
     #include "readSolidMechanicsControls.H"
     #include "createFields.H"
+    mesh.checkSolverControls(D);
 
     // The explicit remainder of the stress: (sigma or P^T) - K grad D
     const auto explicitStress = [&]() -> tmp<volTensorField>

@@ -4,6 +4,8 @@
 
 #include "contactFvMesh.H"
 #include "GAMGAgglomeration.H"
+#include "volFields.H"
+#include "lduInterfaceField.H"
 
 namespace Foam
 {
@@ -64,5 +66,66 @@ void Foam::contactFvMesh::removeContactInterface
         (
             *this
         );
+    }
+}
+
+
+void Foam::contactFvMesh::checkSolverControls(const volVectorField& D) const
+{
+    // The first contact patch of D: an interface field that OpenFOAM does
+    // not couple (processor and cyclic patches are coupled())
+    word contactPatch;
+    forAll(D.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& pf = D.boundaryField()[patchi];
+        if (isA<lduInterfaceField>(pf) && !pf.coupled())
+        {
+            contactPatch = pf.patch().name();
+            break;
+        }
+    }
+    if (contactPatch.empty())
+    {
+        return;
+    }
+
+    const dictionary& solverControls = solverDict(D.name());
+    const auto check = [&](const dictionary& dict)
+    {
+        if (dict.getOrDefault<Switch>("directSolveCoarsest", false))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'directSolveCoarsest' = true in the solver of "
+                << D.name() << " in system/fvSolution (" << dict.name()
+                << "): GAMG's direct solve of its coarsest level"
+                << " (LUscalarMatrix) takes processor and cyclic interfaces"
+                << " only, and " << D.name() << " has the contact interface"
+                << " of patch " << contactPatch << ". Valid:"
+                << " directSolveCoarsest false (the default: the coarsest"
+                << " level solved iteratively), or no such entry"
+                << exit(FatalIOError);
+        }
+        // Processor agglomeration sends the coarse levels' interfaces to
+        // other processors by their GAMGInterface type, which has no
+        // reader for the contact interface
+        if (Pstream::parRun() && dict.found("processorAgglomerator"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'processorAgglomerator' = "
+                << dict.get<word>("processorAgglomerator")
+                << " in the solver of " << D.name() << " in system/fvSolution ("
+                << dict.name() << "): GAMG's processor agglomeration moves"
+                << " the coarse levels' interfaces between processors by"
+                << " their type, and cannot move the contact interface of"
+                << " patch " << contactPatch << " of " << D.name()
+                << ". Valid: no processorAgglomerator entry (each"
+                << " processor keeps its own coarse levels)"
+                << exit(FatalIOError);
+        }
+    };
+    check(solverControls);
+    if (solverControls.isDict("preconditioner"))
+    {
+        check(solverControls.subDict("preconditioner"));
     }
 }
