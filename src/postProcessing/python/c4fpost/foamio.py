@@ -1,5 +1,5 @@
-"""Readers for OpenFOAM ASCII files (writeFormat ascii), the one module
-of them in c4fpost:
+"""Readers for OpenFOAM ASCII files (writeFormat ascii; a binary file is
+refused by read_text with what to do), the one module of them in c4fpost:
 
   fields        a field's internalField or one patch's value (uniform and
                 nonuniform scalar, vector, symmTensor and tensor lists);
@@ -21,6 +21,19 @@ import sys
 import numpy as np
 
 _NCOMP = {"scalar": 1, "vector": 3, "symmTensor": 6, "tensor": 9, "label": 1}
+
+
+def read_text(path):
+    """The text of an OpenFOAM file. A file written with writeFormat binary
+    is refused with what to do: these readers parse ASCII only."""
+    raw = open(path, "rb").read()
+    head = raw[:2000].decode("ascii", errors="replace")
+    if re.search(r"\bformat\s+binary\s*;", head):
+        raise ValueError(
+            "%s is written in binary (writeFormat binary); c4fpost reads ASCII files:"
+            " set writeFormat ascii in system/controlDict and run foamFormatConvert"
+            " -constant (every time and the mesh)" % path)
+    return raw.decode("utf-8", errors="replace")
 
 
 def strip_comments(text):
@@ -66,7 +79,7 @@ def _parse_value(text, pos, size):
 
 def read_internal(path, ncells=None):
     """Internal field values of a volField file."""
-    text = strip_comments(open(path).read())
+    text = strip_comments(read_text(path))
     m = re.search(r"\binternalField\b", text)
     return _parse_value(text, m.end(), ncells or 0)
 
@@ -74,7 +87,7 @@ def read_internal(path, ncells=None):
 def read_patch(path, patch, nfaces=None, key="value"):
     """The 'value' (or another field-valued) entry of one patch of a field
     file."""
-    text = strip_comments(open(path).read())
+    text = strip_comments(read_text(path))
     bm = re.search(r"\bboundaryField\b", text)
     pm = re.compile(r"\b%s\s*\{" % re.escape(patch)).search(text, bm.end())
     if not pm:
@@ -101,7 +114,7 @@ def format_list(values):
 def replace_patch_entry(path, patch, body):
     """Replace the dictionary of one patch in boundaryField of a field file
     by the given entries (text inside the braces)."""
-    text = open(path).read()
+    text = read_text(path)
     bm = re.search(r"\bboundaryField\b", text)
     pm = re.compile(r"\b%s\s*\{" % re.escape(patch)).search(text, bm.end())
     if not pm:
@@ -116,7 +129,7 @@ def replace_patch_entry(path, patch, body):
 
 def read_boundary(case):
     """{patch: (startFace, nFaces, type)} from constant/polyMesh/boundary."""
-    text = strip_comments(open(os.path.join(case, "constant/polyMesh/boundary")).read())
+    text = strip_comments(read_text(os.path.join(case, "constant/polyMesh/boundary")))
     out = {}
     for m in re.finditer(r"(\w+)\s*\{([^}]*)\}", text):
         body = m.group(2)
@@ -130,7 +143,7 @@ def read_boundary(case):
 
 def read_owner(case):
     """Owner cell of every face."""
-    text = strip_comments(open(os.path.join(case, "constant/polyMesh/owner")).read())
+    text = strip_comments(read_text(os.path.join(case, "constant/polyMesh/owner")))
     m = re.search(r"\bFoamFile\s*\{[^}]*\}", text)
     vals, _ = _parse_list(text, m.end(), "label")
     return vals.astype(int)
@@ -175,7 +188,7 @@ def strip(text):
 
 def _body(path):
     """The text inside the top-level counted list 'N ( ... )' of a file."""
-    text = strip(open(path).read())
+    text = strip(read_text(path))
     m = re.search(r"(\d+)\s*\(", text)
     if not m:
         raise ValueError("no counted list in %s" % path)
@@ -225,7 +238,7 @@ def face_geometry(points, face):
 
 def boundary_patches(case):
     """{patch: (startFace, nFaces)} from constant/polyMesh/boundary."""
-    text = strip(open(os.path.join(case, "constant/polyMesh/boundary")).read())
+    text = strip(read_text(os.path.join(case, "constant/polyMesh/boundary")))
     out = {}
     for m in re.finditer(r"(\w+)\s*\{([^}]*)\}", text):
         nf = re.search(r"\bnFaces\s+(\d+)", m.group(2))
@@ -291,7 +304,7 @@ def thickness(case):
 
 def read_entry(path, key):
     """First 'key value;' scalar or word in a dictionary file (no macros)."""
-    text = strip(open(path).read())
+    text = strip(read_text(path))
     m = re.search(r"(?:^|[\s{;])%s\s+([^\s;]+)\s*;" % re.escape(key), text)
     if not m:
         raise KeyError("%s not in %s" % (key, path))
@@ -307,7 +320,7 @@ def read_coeff(path, dict_name, key, default=None):
     dictionary file (one level, no macros), e.g. penaltyScale of
     perturbedLagrangeCoeffs in 0/D; `default` when the dictionary or the
     key is absent (None: KeyError)."""
-    text = strip(open(path).read())
+    text = strip(read_text(path))
     m = re.search(r"(?:^|[\s{;])%s\s*\{([^{}]*)\}" % re.escape(dict_name), text)
     v = None
     if m:
@@ -326,7 +339,7 @@ def read_coeff(path, dict_name, key, default=None):
 def with_includes(path):
     """The text of a dictionary file with its #include "file" lines
     replaced by the files (relative to its directory), comments removed."""
-    text = strip(open(path).read())
+    text = strip(read_text(path))
 
     def include(m):
         return with_includes(os.path.join(os.path.dirname(path), m.group(1)))
