@@ -63,10 +63,10 @@ Foam::solidContactFvPatchVectorField::coupling() const
 
 
 Foam::tmp<Foam::vectorField>
-Foam::solidContactFvPatchVectorField::contactForce(const vectorField& D)
+Foam::solidContactFvPatchVectorField::assemblyForce(const vectorField& D)
 {
     scalarField ps;
-    return contactForce(D, ps);
+    return contactForce(D, ps, true);
 }
 
 
@@ -74,11 +74,12 @@ Foam::tmp<Foam::vectorField>
 Foam::solidContactFvPatchVectorField::contactForce
 (
     const vectorField& D,
-    scalarField& ps
+    scalarField& ps,
+    const bool assembly
 )
 {
     vectorField Fs, Fm;
-    coupling()->forces(D, Fs, Fm, ps);
+    coupling()->forces(D, Fs, Fm, ps, assembly);
     if (settings_.selfContact())
     {
         // Both roles on the same faces: each face's own law and the
@@ -267,7 +268,7 @@ void Foam::solidContactFvPatchVectorField::updateCoeffs()
         {
             setCoefficients
             (
-                contactForce(primitiveField()),
+                assemblyForce(primitiveField()),
                 coupling()->masterDiag()
             );
         }
@@ -289,7 +290,7 @@ void Foam::solidContactFvPatchVectorField::updateCoeffs()
         const contactInterfaceCoupling& c = corrector_.coupling();
         setCoefficients
         (
-            contactForce(primitiveField()),
+            assemblyForce(primitiveField()),
             settings_.selfContact()
           ? vectorField(c.slaveDiag() + c.masterDiag())
           : vectorField(c.slaveDiag())

@@ -134,6 +134,16 @@ void Foam::contactInterfaceCoupling::set(const inputs& in)
     {
         tied_[i] = in.coupled[i] && in.tied.size() && in.tied[i];
     }
+    // A face coupled now and open at the last update (none at the first
+    // update of a run, fresh or restarted: its faces were coupled, or not,
+    // by the state it starts from)
+    newlyCoupled_.setSize(slave.size());
+    forAll(newlyCoupled_, i)
+    {
+        newlyCoupled_[i] =
+            in.coupled[i] && coupled_.size() == slave.size() && !coupled_[i];
+    }
+    coupled_ = in.coupled;
 
     DynamicList<label> start(slave.size() + 1);
     DynamicList<label> mf;
@@ -570,13 +580,40 @@ void Foam::contactInterfaceCoupling::forces
     const vectorField& D,
     vectorField& slaveForce,
     vectorField& masterForce,
-    scalarField& slavePressure
+    scalarField& slavePressure,
+    const bool assembly
 ) const
 {
     List<vector> p;
     slaveForces(D, pair_.masterCellValues(D, tag_), slaveForce, p);
 
     slavePressure = (slaveForce & normal_)/pair_.slavePatch().magSf();
+
+    // The lagged part of an entering face's law at its touching state
+    // (Description, "A face that enters"): only in the matrix's explicit
+    // part, the forces of the solved state stay the law's
+    if (assembly)
+    {
+        forAll(normal_, i)
+        {
+            if (!newlyCoupled_[i] || tied_[i])
+            {
+                continue;
+            }
+            const vector& n = normal_[i];
+            const vector nLag(n - cmptMultiply(faceWeights(i), n));
+            for (label s = start_[i]; s < start_[i+1]; ++s)
+            {
+                if (groups_.any() && groups_.grouped(s))
+                {
+                    continue;
+                }
+                const vector dF(-area_[s]*(n & p[s])*nLag);
+                slaveForce[i] += dF;
+                p[s] += dF/area_[s];
+            }
+        }
+    }
 
     masterForce = pair_.masterSum(masterTransfer(slaveForce, p)(), tag_);
 }
