@@ -1300,12 +1300,8 @@ def rerun_wall(r):
     every later time removed first): its wall time, or NaN when the run
     fails or takes other correctors than `r` did (then not the same run)."""
     case = r["case"]
-    for d in os.listdir(case):
-        try:
-            if float(d) > 0:
-                shutil.rmtree(os.path.join(case, d))
-        except ValueError:
-            pass
+    for d in foamio.times(case):
+        shutil.rmtree(os.path.join(case, d))
     logfile = os.path.join(case, "log.%s.rerun" % SOLVER)
     with open(logfile, "w") as f:
         t0 = time.time()

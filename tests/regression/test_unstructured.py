@@ -25,6 +25,7 @@ import pytest
 
 import harness
 import runs
+from c4fpost import contactreport
 
 LM = runs.LM
 PENALTY = runs.PENALTY
@@ -116,8 +117,8 @@ def test_entering_faces_do_not_overshoot_on_skewed_prisms():
     fn = [float(x) for x in re.findall(
         r"contact blockContact: corrector \d+\s+active = \d+\s+changes = \d+\s+F_N = (\S+)",
         text)]
-    final = re.findall(r"^Time = \S+\s+correctors = \d+.*F_N = (\S+)", text, flags=re.M)
+    final = contactreport.last_row(r["case"], "blockContact")
     first = next((f for f in fn if f > 0), None)
-    ratio = first / float(final[-1]) if first is not None and final else float("inf")
+    ratio = first / final["normalForce"] if first is not None and final else float("inf")
     ck.add(name + "/first_force_over_final", ratio <= 2.0, ratio, 1.0, ratio, 2.0)
     ck.verify()

@@ -600,17 +600,16 @@ void Foam::contactInterfaceCoupling::forces
             {
                 continue;
             }
+            // A grouped sub-face keeps its group's law (and the transfer
+            // takes p only for those): the rest goes with the face's force
             const vector& n = normal_[i];
             const vector nLag(n - cmptMultiply(faceWeights(i), n));
             for (label s = start_[i]; s < start_[i+1]; ++s)
             {
-                if (groups_.any() && groups_.grouped(s))
+                if (!groups_.any() || !groups_.grouped(s))
                 {
-                    continue;
+                    slaveForce[i] -= area_[s]*(n & p[s])*nLag;
                 }
-                const vector dF(-area_[s]*(n & p[s])*nLag);
-                slaveForce[i] += dF;
-                p[s] += dF/area_[s];
             }
         }
     }
