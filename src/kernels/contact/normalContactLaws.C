@@ -40,6 +40,24 @@ std::string describePenaltyRequirement()
 }
 
 
+const double firstContactDepthFraction = 0.5;
+const double firstContactRoundOff = 1e-8;
+
+
+bool waitsAtFirstContact
+(
+    const double gap,
+    const double deepestPenetration,
+    const double h
+)
+{
+    return
+        deepestPenetration > firstContactRoundOff*h
+     && gap < 0
+     && -gap < firstContactDepthFraction*deepestPenetration;
+}
+
+
 bool activeByPrimalDual(const double lambdaN, const double gap, const double c)
 {
     return lambdaN - c*gap > 0;

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "contactCorrector.H"
+#include "normalContactLaws.H"
 #include "contactReporter.H"
 #include "solidPatchTractions.H"
 #include "fvMesh.H"
@@ -140,6 +141,50 @@ void Foam::contactCorrector::setTangentialCompliance
     else
     {
         cond.tangentialCompliance = cond.compliance;
+    }
+}
+
+
+void Foam::contactCorrector::waitAtFirstContact
+(
+    const contactSlaveCondition& cond,
+    contactSlaveState& s
+)
+{
+    label nActive = 0;
+    forAll(cond.active, facei)
+    {
+        nActive += cond.active[facei];
+    }
+    scalar deepest = 0;
+    scalar h = 0;
+    forAll(s.constraintGap, facei)
+    {
+        if (s.inRange[facei])
+        {
+            deepest = max(deepest, -s.constraintGap[facei]);
+            h = max(h, s.h[facei]);
+        }
+    }
+    reduce(nActive, sumOp<label>());
+    reduce(deepest, maxOp<scalar>());
+    reduce(h, maxOp<scalar>());
+    if (nActive)
+    {
+        return;
+    }
+    forAll(s.constraintGap, facei)
+    {
+        if
+        (
+            c4f::contact::waitsAtFirstContact
+            (
+                s.constraintGap[facei], deepest, h
+            )
+        )
+        {
+            s.inRange[facei] = false;
+        }
     }
 }
 
@@ -384,6 +429,10 @@ void Foam::contactCorrector::correct
     // method coupled; a new load step first commits the friction history
     // of the converged state it starts from
     contactSlaveCondition& cond = h.cond();
+    if (!cond.frozen)
+    {
+        waitAtFirstContact(cond, lastState_);
+    }
     if (newStep)
     {
         // The condition the last step converged with (a restart reads

@@ -65,3 +65,42 @@ TEST(lagrangeMultiplier, activeSetUpdateCountsChanges)
     std::vector<char> wrong(3, 0);
     EXPECT_THROW(updateActiveSet(lambda, gap, 1e12, wrong), std::invalid_argument);
 }
+
+TEST(firstContact, onlyTheShallowPenetrationsWait)
+{
+    const double d = 2e-5, h = 1e-3;
+    EXPECT_FALSE(waitsAtFirstContact(-d, d, h));          // the deepest enters
+    EXPECT_FALSE(waitsAtFirstContact(-0.5*d, d, h));      // at the fraction
+    EXPECT_TRUE(waitsAtFirstContact(-0.49*d, d, h));
+    EXPECT_TRUE(waitsAtFirstContact(-1e-30, d, h));
+    EXPECT_FALSE(waitsAtFirstContact(0.0, d, h));         // touching, open
+    EXPECT_FALSE(waitsAtFirstContact(1e-6, d, h));        // open faces untouched
+    // Nothing penetrates (or a degenerate deepest): nobody waits
+    EXPECT_FALSE(waitsAtFirstContact(-1e-6, 0.0, h));
+    EXPECT_FALSE(waitsAtFirstContact(-1e-6, -1.0, h));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_FALSE(waitsAtFirstContact(nan, d, h));
+    EXPECT_FALSE(waitsAtFirstContact(-1e-6, nan, h));
+    EXPECT_FALSE(waitsAtFirstContact(-1e-6, d, nan));
+    // Meshed touching surfaces: gaps of round-off, every face enters
+    EXPECT_FALSE(waitsAtFirstContact(-1e-13, 2.7e-13, h));
+    EXPECT_TRUE(waitsAtFirstContact(-1e-13, 2.7e-13, 1e-6));
+}
+
+TEST(firstContact, hertzSphereEntersItsContactRadius)
+{
+    // Overlap depth delta - r^2/(2 R) of a sphere pressed delta into a
+    // plane; Hertz: a^2 = R delta. The faces that enter are those inside a.
+    const double R = 0.05, delta = 1e-5, h = 1e-3;
+    const double a = std::sqrt(R*delta);
+    for (int i = 0; i <= 40; ++i)
+    {
+        const double r = 1.5*a*i/40.0;
+        const double gap = r*r/(2*R) - delta;
+        const bool enters = gap < 0 && !waitsAtFirstContact(gap, delta, h);
+        if (std::abs(r - a) > 1e-12*a)
+        {
+            EXPECT_EQ(enters, r < a) << "r/a = " << r/a;
+        }
+    }
+}
