@@ -40,10 +40,6 @@ std::string describePenaltyRequirement()
 }
 
 
-const double firstContactDepthFraction = 0.5;
-const double firstContactRoundOff = 1e-8;
-
-
 bool waitsAtFirstContact
 (
     const double gap,

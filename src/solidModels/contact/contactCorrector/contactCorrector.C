@@ -145,7 +145,7 @@ void Foam::contactCorrector::setTangentialCompliance
 }
 
 
-void Foam::contactCorrector::waitAtFirstContact
+Foam::label Foam::contactCorrector::waitAtFirstContact
 (
     const contactSlaveCondition& cond,
     contactSlaveState& s
@@ -156,6 +156,11 @@ void Foam::contactCorrector::waitAtFirstContact
     {
         nActive += cond.active[facei];
     }
+    if (returnReduce(nActive, sumOp<label>()))
+    {
+        return 0;
+    }
+
     scalar deepest = 0;
     scalar h = 0;
     forAll(s.constraintGap, facei)
@@ -166,13 +171,10 @@ void Foam::contactCorrector::waitAtFirstContact
             h = max(h, s.h[facei]);
         }
     }
-    reduce(nActive, sumOp<label>());
     reduce(deepest, maxOp<scalar>());
     reduce(h, maxOp<scalar>());
-    if (nActive)
-    {
-        return;
-    }
+
+    label nWaiting = 0;
     forAll(s.constraintGap, facei)
     {
         if
@@ -184,8 +186,10 @@ void Foam::contactCorrector::waitAtFirstContact
         )
         {
             s.inRange[facei] = false;
+            ++nWaiting;
         }
     }
+    return returnReduce(nWaiting, sumOp<label>());
 }
 
 
@@ -267,6 +271,7 @@ Foam::contactCorrector::contactCorrector()
     searchTime_(0),
     timer_(),
     normalForce_(GREAT),
+    nWaiting_(0),
     multiplierHistory_()
 {}
 
@@ -282,6 +287,7 @@ Foam::contactCorrector::contactCorrector(const contactCorrector& c)
     searchTime_(c.searchTime_),
     timer_(),
     normalForce_(c.normalForce_),
+    nWaiting_(c.nWaiting_),
     multiplierHistory_()
 {}
 
@@ -428,11 +434,13 @@ void Foam::contactCorrector::correct
     // 4. The method's decision, then the friction model's on the faces the
     // method coupled; a new load step first commits the friction history
     // of the converged state it starts from
+    // First contact: the barrier keeps every gap open (a penetration
+    // stops its run), so it has no first overlap to thin
     contactSlaveCondition& cond = h.cond();
-    if (!cond.frozen)
-    {
-        waitAtFirstContact(cond, lastState_);
-    }
+    nWaiting_ =
+        cond.frozen || h.method().traits().openStart
+      ? 0
+      : waitAtFirstContact(cond, lastState_);
     if (newStep)
     {
         // The condition the last step converged with (a restart reads
@@ -533,8 +541,12 @@ bool Foam::contactCorrector::converged
     const scalar F = gSum(h.pressure()*slave.magSf());
     const scalar dF = mag(F - normalForce_);
     const label nActive = h.nActive();
+    // A corrector that held faces back at first contact has not offered
+    // them to the method: a method that entered none of the others (no
+    // change) must still see them
     const bool converged =
         changes == 0
+     && nWaiting_ == 0
      && (nActive == 0 || dF <= tolerance*max(mag(F), VSMALL))
      && h.method().lawConverged(lastState_, h.pressure());
 

@@ -85,6 +85,17 @@ TEST(firstContact, onlyTheShallowPenetrationsWait)
     // Meshed touching surfaces: gaps of round-off, every face enters
     EXPECT_FALSE(waitsAtFirstContact(-1e-13, 2.7e-13, h));
     EXPECT_TRUE(waitsAtFirstContact(-1e-13, 2.7e-13, 1e-6));
+    for (const double g : {-1e-12, 1e-12, -0.0, 0.0})
+    {
+        EXPECT_FALSE(waitsAtFirstContact(g, 1e-11, h)) << g;
+    }
+    // A deepest of inf (a broken search) holds every finite penetration
+    // back but lets the infinite one through: nothing divides by it
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_TRUE(waitsAtFirstContact(-1.0, inf, h));
+    EXPECT_FALSE(waitsAtFirstContact(-inf, inf, h));
+    EXPECT_FALSE(waitsAtFirstContact(inf, d, h));
+    EXPECT_FALSE(waitsAtFirstContact(-1e-6, d, inf));   // floor above all
 }
 
 TEST(firstContact, hertzSphereEntersItsContactRadius)
