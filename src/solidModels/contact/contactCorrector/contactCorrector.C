@@ -147,20 +147,9 @@ void Foam::contactCorrector::setTangentialCompliance
 
 Foam::label Foam::contactCorrector::waitAtFirstContact
 (
-    const contactSlaveCondition& cond,
     contactSlaveState& s
 )
 {
-    label nActive = 0;
-    forAll(cond.active, facei)
-    {
-        nActive += cond.active[facei];
-    }
-    if (returnReduce(nActive, sumOp<label>()))
-    {
-        return 0;
-    }
-
     scalar deepest = 0;
     scalar h = 0;
     forAll(s.constraintGap, facei)
@@ -434,13 +423,15 @@ void Foam::contactCorrector::correct
     // 4. The method's decision, then the friction model's on the faces the
     // method coupled; a new load step first commits the friction history
     // of the converged state it starts from
-    // First contact: the barrier keeps every gap open (a penetration
-    // stops its run), so it has no first overlap to thin
+    // First contact (no face active): the barrier keeps every gap open
+    // (a penetration stops its run), so it has no first overlap to thin.
+    // frozen and openStart are the same on every processor, so nActive's
+    // reduction is reached by all or none
     contactSlaveCondition& cond = h.cond();
     nWaiting_ =
-        cond.frozen || h.method().traits().openStart
+        cond.frozen || h.method().traits().openStart || h.nActive()
       ? 0
-      : waitAtFirstContact(cond, lastState_);
+      : waitAtFirstContact(lastState_);
     if (newStep)
     {
         // The condition the last step converged with (a restart reads
