@@ -304,6 +304,32 @@ int main(int argc, char *argv[])
         }
     };
 
+    // A diverging corrector sequence stops here with what happened, before
+    // the laws, the search or the linear solver meet numbers they cannot
+    // hold (a neo-Hookean stress of |F| ~ 1e100 overflowed into SIGFPE):
+    // no displacement is a thousand times the bodies' extent
+    const scalar extent = mesh.bounds().mag();
+    const auto checkDiverged = [&](const label nCorr)
+    {
+        const scalar Dmax = gMax(mag(D.primitiveField())());
+        if (!std::isfinite(Dmax) || Dmax > 1e3*extent)
+        {
+            FatalErrorInFunction
+                << "Load step at time " << runTime.timeName()
+                << ", corrector " << nCorr << ": the outer correctors"
+                << " diverged (max |D| = " << Dmax << " m, the mesh's extent "
+                << extent << " m); nothing of this step is written. A"
+                << " smaller load step (deltaT) may converge"
+                << (
+                       stabilisationScale < 1
+                     ? "; so may a larger stabilisationScale (now "
+                     + Foam::name(stabilisationScale) + ", docs/solver.md)"
+                     : string()
+                   ).c_str()
+                << exit(FatalError);
+        }
+    };
+
     // Assemble the D equation (the boundary conditions, the contact ones
     // among them, updated from D) and solve it: the solver's controls, or
     // Newton-Krylov's fixed cycles
@@ -384,6 +410,7 @@ int main(int argc, char *argv[])
             }
 
             const SolverPerformance<vector> perf = solveD();
+            checkDiverged(nCorr + 1);
             const label nLinear = cmptSum(perf.nIterations());
             nLinearStep += nLinear;
 
@@ -490,6 +517,7 @@ int main(int argc, char *argv[])
                 acceleration.scaleStep(alpha);
             }
 
+            checkDiverged(nCorr);
             updateStress();
 
             if (verbose)
