@@ -111,6 +111,12 @@ deformation, 100 steps; dF_N at its last), rigidSphere and rigidPunch
 (rigid tools; Newton solves with GAMG where the tutorial has PCG);
 markdown in newton.md.
 
+Near-incompressible bodies (`run.py --only stabilisation`): hertzCylinder
+(LM, nu in both bodies) and plateHole in plane strain (Kirsch) at three
+Poisson's ratios, each with stabilisationScale 1 (the default), 0.3 and
+0.1: the errors against the closed form and the correctors; markdown in
+stabilisation.md.
+
 The proximity search (CGAL AABB tree, brute force, OpenFOAM's
 indexedOctree) has its own benchmark, tests/bench/searchBench.py.
 """
@@ -1758,6 +1764,65 @@ def newton_bench():
     open(os.path.join(WORK, "newton.md"), "w").write("\n".join(md) + "\n")
 
 
+STABILISATION_NUS = (0.3, 0.45, 0.49)
+STABILISATION_SCALES = (1, 0.3, 0.1)
+
+
+def set_nu_everywhere(nu, plane_strain=False):
+    """An edit that sets nu in every linear-elastic law of the case
+    (constant/materials/* or constant/mechanicalProperties), and plane
+    strain where asked."""
+    def edit(case):
+        d = os.path.join(case, "constant", "materials")
+        paths = ([os.path.join(d, f) for f in os.listdir(d)] if os.path.isdir(d)
+                 else [os.path.join(case, "constant", "mechanicalProperties")])
+        for path in paths:
+            text = re.sub(r"\b(nu\s+)[^;]*;", r"\g<1>%s;" % nu, open(path).read())
+            if plane_strain:
+                text = re.sub(r"\b(planeStress\s+)yes;", r"\g<1>no;", text)
+            open(path, "w").write(text)
+    return edit
+
+
+def stabilisation_bench():
+    """The smoothing term's share s (stabilisationScale) against two closed
+    forms at three Poisson's ratios: hertzCylinder's p0 and a against Hertz,
+    plateHole's sigma_xx along the symmetry line against Kirsch (plane
+    strain: the stress does not depend on nu), and the correctors."""
+    print("\n== Near-incompressible bodies: stabilisationScale s against Hertz and Kirsch")
+    head = ("case", "nu", "s", "correctors", "wall s", "error 1", "error 2")
+    fmt = "%-34s %5s %5s %10s %7s %16s %16s"
+    print(fmt % head)
+    md = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    sys.path.insert(0, os.path.join(ROOT, "tutorials", "plateHole", "validation"))
+    for tutorial in ("hertzCylinder", "plateHole"):
+        for nu in STABILISATION_NUS:
+            for sc in STABILISATION_SCALES:
+                name = "stabilisation_%s_nu%g_s%g" % (tutorial, nu, sc)
+                r = bench_case(name, os.path.join(ROOT, "tutorials", tutorial), allrun=[],
+                               entries={"stabilisationScale": "%g" % sc},
+                               edit=set_nu_everywhere(nu, tutorial == "plateHole"))
+                if not r["converged"]:
+                    row = (tutorial, "%g" % nu, "%g" % sc, "no (rc=%d)" % r["rc"], "", "", "")
+                else:
+                    if tutorial == "hertzCylinder":
+                        c = {x["name"].split("/")[-1]: x
+                             for x in compareHertz.compare(r["case"])["checks"]}
+                        e1 = "p0 %.2f %%" % (100 * c["peak_pressure"]["error"])
+                        e2 = "a %.3f mm" % (1e3 * c["contact_half_width"]["error"])
+                    else:
+                        c = {x["name"].split("/")[-1]: x
+                             for x in compareKirsch.compare(r["case"])["checks"]}
+                        e1 = "sxx %.1f %%" % (100 * c["sxx_symmetry_line_max_error"]["error"])
+                        e2 = "first cell %.1f %%" % (100 * c["peak_sxx_first_cell"]["error"])
+                    label = tutorial + (" (plane strain)" if tutorial == "plateHole" else "")
+                    row = (label, "%g" % nu, "%g" % sc, "%d" % r["ncorr"], "%.1f" % r["wall"],
+                           e1, e2)
+                print(fmt % row)
+                md.append("| " + " | ".join(row) + " |")
+    open(os.path.join(WORK, "stabilisation.md"), "w").write("\n".join(md) + "\n")
+
+
 def main():
     global FRICTION_CATTANEO_METHODS
     import argparse
@@ -1765,7 +1830,7 @@ def main():
     ap.add_argument("--only", choices=("convergence", "hertz", "plate", "uzawa", "roles",
                                        "perturbedLagrange", "methods", "friction",
                                        "unstructured", "finiteStrain", "ironing", "rigid",
-                                       "gamg", "big", "newton"),
+                                       "gamg", "big", "newton", "stabilisation"),
                     help="run one part only (convergence includes hertz's runs)")
     ap.add_argument("--cattaneo-methods", nargs="+", metavar="METHOD",
                     help="the friction part's cattaneoMindlin methods (default: %s;"
@@ -1806,6 +1871,8 @@ def main():
         big_bench()
     if args.only in (None, "newton"):
         newton_bench()
+    if args.only in (None, "stabilisation"):
+        stabilisation_bench()
     print("\n(bench: %.0f s)" % (time.time() - t0))
 
 
