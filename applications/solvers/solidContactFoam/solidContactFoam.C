@@ -261,12 +261,11 @@ int main(int argc, char *argv[])
     // 48:267, with s = 1). Its size follows K = 2 mu + lambda, not the
     // shear modulus, so a near-incompressible body is smoothed as if it
     // were 2 (1 - nu)/(1 - 2 nu) times stiffer in shear (51 at nu = 0.49,
-    // plane strain): hertzCylinder with
-    // nu = 0.49 was 10.6 % off Hertz in p0 at s = 1, 1.9 % at 0.1
-    // (docs/solver.md). K stays the implicit coefficient (the corrector's
-    // contraction needs it); s < 1 takes (1 - s) K of the smoothing out
-    // explicitly, which leaves the oscillation modes a contraction of
-    // 1 - s per corrector
+    // plane strain): hertzCylinder with nu = 0.49 was 10.6 % off Hertz in
+    // p0 at s = 1, 1.9 % at 0.1 (docs/solver.md). K stays the implicit
+    // coefficient (the corrector's contraction needs it); s < 1 takes
+    // (1 - s) K of the smoothing out explicitly, which leaves the
+    // oscillation modes a contraction of 1 - s per corrector
     const scalar stabilisationRemoved = 1 - stabilisationScale;
 
     // Anderson acceleration of the outer correctors, or none
