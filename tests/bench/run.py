@@ -1691,15 +1691,11 @@ def rigid_bench():
             "%.2f" % (r["wall"] / two["wall"]) if two["converged"] else "-"))
 
 
-def set_nu(nu):
-    """An edit that sets nu in every material of constant/materials."""
+def set_nu(nu, plane_strain=False):
+    """An edit that sets nu in every law of the case
+    (c4fpost.foamio.set_poisson_ratio), and plane strain where asked."""
     def edit(case):
-        d = os.path.join(case, "constant", "materials")
-        for f in os.listdir(d):
-            path = os.path.join(d, f)
-            text = open(path).read()
-            open(path, "w").write(re.sub(r"^(\s*nu\s+)[^;]*;", r"\g<1>%s;" % nu, text,
-                                         flags=re.M))
+        foamio.set_poisson_ratio(case, nu, plane_strain)
     return edit
 
 
@@ -1768,22 +1764,6 @@ STABILISATION_NUS = (0.3, 0.45, 0.49)
 STABILISATION_SCALES = (1, 0.3, 0.1)
 
 
-def set_nu_everywhere(nu, plane_strain=False):
-    """An edit that sets nu in every linear-elastic law of the case
-    (constant/materials/* or constant/mechanicalProperties), and plane
-    strain where asked."""
-    def edit(case):
-        d = os.path.join(case, "constant", "materials")
-        paths = ([os.path.join(d, f) for f in os.listdir(d)] if os.path.isdir(d)
-                 else [os.path.join(case, "constant", "mechanicalProperties")])
-        for path in paths:
-            text = re.sub(r"\b(nu\s+)[^;]*;", r"\g<1>%s;" % nu, open(path).read())
-            if plane_strain:
-                text = re.sub(r"\b(planeStress\s+)yes;", r"\g<1>no;", text)
-            open(path, "w").write(text)
-    return edit
-
-
 def stabilisation_bench():
     """The smoothing term's share s (stabilisationScale) against two closed
     forms at three Poisson's ratios: hertzCylinder's p0 and a against Hertz,
@@ -1801,7 +1781,7 @@ def stabilisation_bench():
                 name = "stabilisation_%s_nu%g_s%g" % (tutorial, nu, sc)
                 r = bench_case(name, os.path.join(ROOT, "tutorials", tutorial), allrun=[],
                                entries={"stabilisationScale": "%g" % sc},
-                               edit=set_nu_everywhere(nu, tutorial == "plateHole"))
+                               edit=set_nu(nu, tutorial == "plateHole"))
                 if not r["converged"]:
                     row = (tutorial, "%g" % nu, "%g" % sc, "no (rc=%d)" % r["rc"], "", "", "")
                 else:

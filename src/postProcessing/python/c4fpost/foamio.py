@@ -127,6 +127,30 @@ def replace_patch_entry(path, patch, body):
     open(path, "w").write(text[:pm.start()] + new + text[i:])
 
 
+def set_poisson_ratio(case, nu, plane_strain=False):
+    """Set every `nu` entry of the case's laws to nu: in
+    constant/mechanicalProperties and in each file of constant/materials
+    (the material sets tutorials #include), one-line coefficient
+    dictionaries included, comments left alone; with plane_strain every
+    `planeStress yes` becomes no. Returns how many entries were set (a case
+    with none raises)."""
+    paths = [os.path.join(case, "constant", "mechanicalProperties")]
+    d = os.path.join(case, "constant", "materials")
+    if os.path.isdir(d):
+        paths += [os.path.join(d, f) for f in sorted(os.listdir(d))]
+    n = 0
+    for path in paths:
+        # a number after `nu`, so that "nu = 0.25," in a comment is left
+        text, k = re.subn(r"\b(nu\s+)[-+0-9.eE]+\s*;", r"\g<1>%s;" % nu, read_text(path))
+        if plane_strain:
+            text = re.sub(r"\b(planeStress\s+)yes;", r"\g<1>no;", text)
+        open(path, "w").write(text)
+        n += k
+    if n == 0:
+        raise KeyError("no nu entry in " + ", ".join(paths))
+    return n
+
+
 def read_boundary(case):
     """{patch: (startFace, nFaces, type)} from constant/polyMesh/boundary."""
     text = strip_comments(read_text(os.path.join(case, "constant/polyMesh/boundary")))
