@@ -180,6 +180,7 @@ Usage
 #include "frictionModel.H"
 #include "contactFvMesh.H"
 #include "outerCorrectorAcceleration.H"
+#include "outerCorrectorRelaxation.H"
 #include "newtonKrylovCorrector.H"
 #include "solidMeshQuality.H"
 #include "checkAdmissible.H"
@@ -267,6 +268,14 @@ int main(int argc, char *argv[])
     // (1 - s) K of the smoothing out explicitly, which leaves the
     // oscillation modes a contraction of 1 - s per corrector
     const scalar stabilisationRemoved = 1 - stabilisationScale;
+
+    // The relaxation of each corrector's update: the case's factor for D,
+    // else one from the laws that keeps a body loaded by tractions from
+    // growing its volumetric mode (3D, nu > 1/4; its header says why)
+    const outerCorrectorRelaxation relaxation
+    (
+        D, mech.law(), impK, nonlinearGeometry
+    );
 
     // Anderson acceleration of the outer correctors, or none
     outerCorrectorAcceleration acceleration(solidControls, D);
@@ -366,7 +375,16 @@ int main(int argc, char *argv[])
             )
           : DEqn.solve();
 
-        D.relax();
+        // Not Newton's products: each measures G(x) - x at its own x,
+        // which relaxing only scales (and D_0 is not that x)
+        if (newtonNow)
+        {
+            D.relax();
+        }
+        else
+        {
+            relaxation.relax(D);
+        }
 
         return perf;
     };
