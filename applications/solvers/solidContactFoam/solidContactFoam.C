@@ -125,6 +125,14 @@ Description
     10.6 % off Hertz with s = 1, 1.9 % with 0.1 (228 and 1122 correctors;
     docs/solver.md, "Near-incompressible bodies").
 
+    The split is a Jacobi iteration on the normal stresses of a body
+    loaded by tractions; in 3D its volumetric mode changes by
+    -2 nu/(1 - nu) a corrector, unstable above nu = 1/3 (hertzSphere and
+    the 3D patch test diverged at nu = 0.45). Each corrector's update is
+    relaxed by omega = min(1, (5/3)/q) from the laws
+    (outerCorrectorRelaxation; 1, nothing changed, up to nu = 1/4 in 3D),
+    or by the case's relaxationFactors for D.
+
     Each step prints one summary line:
         Time = <t>  correctors = <n>  residual = <r>  [contact state]
 
