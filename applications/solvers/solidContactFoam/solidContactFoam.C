@@ -129,8 +129,8 @@ Description
     loaded by tractions; in 3D its volumetric mode changes by
     -2 nu/(1 - nu) a corrector, unstable above nu = 1/3 (hertzSphere and
     the 3D patch test diverged at nu = 0.45). Each corrector's update is
-    relaxed by omega = min(1, (5/3)/q) from the laws
-    (outerCorrectorRelaxation; 1, nothing changed, up to nu = 1/4 in 3D),
+    relaxed by omega = (5/3)/q from the laws where q > 2
+    (outerCorrectorRelaxation; 1, nothing changed, up to nu = 1/3 in 3D),
     or by the case's relaxationFactors for D.
 
     Each step prints one summary line:
@@ -279,7 +279,7 @@ int main(int argc, char *argv[])
 
     // The relaxation of each corrector's update: the case's factor for D,
     // else one from the laws that keeps a body loaded by tractions from
-    // growing its volumetric mode (3D, nu > 1/4; its header says why)
+    // growing its volumetric mode (3D, nu > 1/3; its header says why)
     const outerCorrectorRelaxation relaxation
     (
         D, mech.law(), impK, nonlinearGeometry

@@ -37,7 +37,11 @@ double c4f::elasticity::volumetricModeRelaxation
     const double rho
 )
 {
-    if (!std::isfinite(q) || !(q > (1 + rho)*(1 + volumetricModeTolerance)))
+    if
+    (
+        !std::isfinite(q)
+     || !(q > volumetricModeUnstable*(1 + volumetricModeTolerance))
+    )
     {
         return 1;
     }
