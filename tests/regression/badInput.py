@@ -163,8 +163,9 @@ CASES = [
       "searchDistance"]),
     # Not bad input but a run that diverges (a neo-Hookean body with
     # nu = 0.45, stabilisationScale 0.1, under finite deformation, the plain
-    # corrector without the relaxation the solver now takes from the laws:
-    # relaxationFactors for D of 1; measured, docs/solver.md): it must stop
+    # corrector: relaxationFactors for D of 1, whatever the solver would take
+    # from the laws (relaxed by 0.92 it converged); measured, docs/solver.md:
+    # it must stop
     # with what happened, not with the law's stress overflowing into SIGFPE
     # as it did, and write nothing
     ("outerCorrectorsDiverge", "finiteStrainCylinder",
