@@ -112,7 +112,8 @@ deformation, 100 steps; dF_N at its last), rigidSphere and rigidPunch
 markdown in newton.md.
 
 Near-incompressible bodies (`run.py --only stabilisation`): hertzCylinder
-(LM, nu in both bodies) and plateHole in plane strain (Kirsch) at three
+(LM, nu in both bodies), plateHole in plane strain (Kirsch) and hertzSphere
+(3D, where above nu = 1/3 the solver relaxes its correctors) at three
 Poisson's ratios, each with stabilisationScale 1 (the default), 0.3 and
 0.1: the errors against the closed form and the correctors; markdown in
 stabilisation.md.
@@ -1768,14 +1769,17 @@ def stabilisation_bench():
     """The smoothing term's share s (stabilisationScale) against two closed
     forms at three Poisson's ratios: hertzCylinder's p0 and a against Hertz,
     plateHole's sigma_xx along the symmetry line against Kirsch (plane
-    strain: the stress does not depend on nu), and the correctors."""
+    strain: the stress does not depend on nu), hertzSphere's p_max and the
+    RMS of p - p_Hertz (3D), and the correctors."""
     print("\n== Near-incompressible bodies: stabilisationScale s against Hertz and Kirsch")
     head = ("case", "nu", "s", "correctors", "wall s", "error 1", "error 2")
     fmt = "%-34s %5s %5s %10s %7s %16s %16s"
     print(fmt % head)
     md = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
     sys.path.insert(0, os.path.join(ROOT, "tutorials", "plateHole", "validation"))
-    for tutorial in ("hertzCylinder", "plateHole"):
+    sys.path.insert(0, os.path.join(ROOT, "tutorials", "hertzSphere", "validation"))
+    import compareSphere
+    for tutorial in ("hertzCylinder", "plateHole", "hertzSphere"):
         for nu in STABILISATION_NUS:
             for sc in STABILISATION_SCALES:
                 name = "stabilisation_%s_nu%g_s%g" % (tutorial, nu, sc)
@@ -1790,6 +1794,11 @@ def stabilisation_bench():
                              for x in compareHertz.compare(r["case"])["checks"]}
                         e1 = "p0 %.2f %%" % (100 * c["peak_pressure"]["error"])
                         e2 = "a %.3f mm" % (1e3 * c["contact_half_width"]["error"])
+                    elif tutorial == "hertzSphere":
+                        c = {x["name"].split("/")[-1]: x
+                             for x in compareSphere.compare(r["case"])["checks"]}
+                        e1 = "p_max %.2f %%" % (100 * c["peak_pressure"]["error"])
+                        e2 = "RMS %.2f %% of p0" % (100 * c["pressure_rms"]["error"])
                     else:
                         c = {x["name"].split("/")[-1]: x
                              for x in compareKirsch.compare(r["case"])["checks"]}

@@ -165,9 +165,8 @@ CASES = [
     # nu = 0.45, stabilisationScale 0.1, under finite deformation, the plain
     # corrector: relaxationFactors for D of 1, whatever the solver would take
     # from the laws (relaxed by 0.92 it converged); measured, docs/solver.md:
-    # it must stop
-    # with what happened, not with the law's stress overflowing into SIGFPE
-    # as it did, and write nothing
+    # it must stop with what happened, not with the law's stress
+    # overflowing into SIGFPE as it did, and write nothing
     ("outerCorrectorsDiverge", "finiteStrainCylinder",
      [(MP, r"^materialLaw\s+stVenantKirchhoff;", "materialLaw neoHookean;"),
       (MP, r"nu(\s+)0\.3;(\s+)form", r"nu\g<1>0.45;\g<2>form"),
