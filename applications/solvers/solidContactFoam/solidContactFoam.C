@@ -384,12 +384,10 @@ int main(int argc, char *argv[])
           : DEqn.solve();
 
         // Not Newton's products: each measures G(x) - x at its own x,
-        // which relaxing only scales (and D_0 is not that x)
-        if (newtonNow)
-        {
-            D.relax();
-        }
-        else
+        // which relaxing would only scale, and about D's previous iterate,
+        // which is not that x (so a case's relaxationFactors are not
+        // taken there either)
+        if (!newtonNow)
         {
             relaxation.relax(D);
         }
