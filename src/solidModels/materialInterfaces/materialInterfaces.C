@@ -9,6 +9,7 @@
 #include "harmonic.H"
 #include "linear.H"
 #include "gaussGrad.H"
+#include "uniformVolField.H"
 
 namespace Foam
 {
@@ -65,20 +66,11 @@ Foam::materialInterfaces::materialInterfaces
     faces_.transfer(faces);
 
     // The neighbour's material across a coupled patch comes with the swap
-    volScalarField material
+    tmp<volScalarField> tmaterial
     (
-        IOobject
-        (
-            "cellMaterial",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh,
-        dimensionedScalar(dimless, Zero)
+        uniformVolField(mesh, "cellMaterial", dimensionedScalar(dimless, Zero))
     );
+    volScalarField& material = tmaterial.ref();
     forAll(cellMaterial, celli)
     {
         material[celli] = cellMaterial[celli];

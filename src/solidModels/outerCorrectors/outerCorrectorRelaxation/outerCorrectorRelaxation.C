@@ -4,6 +4,7 @@
 
 #include "outerCorrectorRelaxation.H"
 #include "segregatedRelaxation.H"
+#include "uniformVolField.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -38,19 +39,12 @@ Foam::scalar Foam::outerCorrectorRelaxation::measureQ
         tensor G(Zero);
         G(j, j) = strain;
 
-        const volTensorField probe
+        const tmp<volTensorField> probe
         (
-            IOobject
+            uniformVolField
             (
-                "gradDProbe",
-                mesh.time().timeName(),
-                mesh,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh,
-            dimensionedTensor("gradDProbe", dimless, G)
+                mesh, "gradDProbe", dimensionedTensor("gradDProbe", dimless, G)
+            )
         );
 
         // The normal stresses of the probe, whichever stress the solver
@@ -58,7 +52,7 @@ Foam::scalar Foam::outerCorrectorRelaxation::measureQ
         scalarField normal[3];
         if (nonlinearGeometry)
         {
-            const tmp<volTensorField> tP(law.firstPiola(probe));
+            const tmp<volTensorField> tP(law.firstPiola(probe()));
             const tensorField& P = tP().primitiveField();
             normal[0] = P.component(tensor::XX);
             normal[1] = P.component(tensor::YY);
@@ -66,7 +60,7 @@ Foam::scalar Foam::outerCorrectorRelaxation::measureQ
         }
         else
         {
-            const tmp<volSymmTensorField> tsigma(law.sigma(probe));
+            const tmp<volSymmTensorField> tsigma(law.sigma(probe()));
             const symmTensorField& sigma = tsigma().primitiveField();
             normal[0] = sigma.component(symmTensor::XX);
             normal[1] = sigma.component(symmTensor::YY);
