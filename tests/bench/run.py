@@ -134,11 +134,13 @@ sys.path.insert(0, os.path.join(ROOT, "src/postProcessing/python"))
 sys.path.insert(0, os.path.join(ROOT, "tutorials/plateHole/validation"))
 sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzCylinder/validation"))
 sys.path.insert(0, os.path.join(ROOT, "tutorials/contactPatchTest/validation"))
+sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzSphere/validation"))
 
 import numpy as np  # noqa: E402
 from c4fpost import blockmesh, contactfree, contactreport, foamio, kirsch, methods  # noqa: E402
 import compareHertz  # noqa: E402
 import compareKirsch  # noqa: E402
+import compareSphere  # noqa: E402
 
 PREFIX = os.environ.get("C4F_PREFIX", os.path.expanduser("~/.contact4foam"))
 WORK = os.path.join(PREFIX, "run", "bench")
@@ -832,8 +834,6 @@ def methods_bench():
     WORK/methods.png."""
     import compareHertz
     import comparePatchTest
-    sys.path.insert(0, os.path.join(ROOT, "tutorials/hertzSphere/validation"))
-    import compareSphere
     names = methods.names()
     print("\n== every method side by side: %s" % ", ".join(names), flush=True)
     rows = []
@@ -1777,8 +1777,6 @@ def stabilisation_bench():
     print(fmt % head)
     md = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
     sys.path.insert(0, os.path.join(ROOT, "tutorials", "plateHole", "validation"))
-    sys.path.insert(0, os.path.join(ROOT, "tutorials", "hertzSphere", "validation"))
-    import compareSphere
     for tutorial in ("hertzCylinder", "plateHole", "hertzSphere"):
         for nu in STABILISATION_NUS:
             for sc in STABILISATION_SCALES:

@@ -111,7 +111,8 @@ def test_hertz_sphere_nu045():
 
 def unrelaxed_plain(case):
     """relaxationFactors for D of 1 (the case's own factor: the corrector
-    as it was before outerCorrectorRelaxation), with no acceleration."""
+    as it was before outerCorrectorRelaxation); the caller also turns the
+    acceleration off."""
     with open(os.path.join(case, "system", "fvSolution"), "a") as f:
         f.write("\nrelaxationFactors\n{\n    fields\n    {\n        D 1;\n    }\n}\n")
 
