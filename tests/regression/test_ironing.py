@@ -57,12 +57,15 @@ def test_shallow_ironing():
 # slide but for NOT_SMOOTH: constitutiveLaw 7.9 % (cN 1e20; 8.1 % with
 # 1e19, 7.5 % with 1e21), augmentedLagrange 9.9 %, crossConstraint 10.0 %
 # (sliding steps ending on either state of the faces at the die's leading
-# corner), whose smoothness is not checked. Before the augmented family
+# corner), whose smoothness is not checked; the barrier (since
+# 2026-12-07: V(1) 312.3, H/V(1.5) 0.353, H 6.9 %, two sliding steps on
+# the corner's other state, 148 correctors a sliding step) likewise.
+# Before the augmented family
 # tied stuck faces exactly (uzawaMethod::exactTangentialTie) it did not
 # converge t = 1.04: a face at the cone's edge cycled stick, slip, slip.
 SLIDING = [m for m in harness.methods_where(finite_strain=True, slip=True)
            if m != "lagrangeMultiplier"]
-NOT_SMOOTH = ("constitutiveLaw", "augmentedLagrange", "crossConstraint")
+NOT_SMOOTH = ("constitutiveLaw", "augmentedLagrange", "crossConstraint", "barrier")
 
 
 @pytest.mark.parametrize("method", SLIDING)

@@ -523,7 +523,8 @@ int main(int argc, char *argv[])
             // (a backtracking line search)
             for (label nLimit = 0; ; ++nLimit)
             {
-                const scalar alpha = contactStateReporter::stepLimit(D);
+                const scalar alpha =
+                    contactStateReporter::stepLimit(D, newtonNow);
                 if (alpha >= 1)
                 {
                     break;

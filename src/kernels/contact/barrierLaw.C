@@ -60,6 +60,28 @@ NormalLawValue barrierPressure
 }
 
 
+NormalLawValue barrierPressureExtended
+(
+    const double gap,
+    const double dhat,
+    const double kappa,
+    const double extensionGap
+)
+{
+    // A NaN gap takes the barrier's own answer (saturated, never NaN)
+    if (std::isnan(gap) || gap >= extensionGap)
+    {
+        return barrierPressure(gap, dhat, kappa);
+    }
+    const NormalLawValue e = barrierPressure(extensionGap, dhat, kappa);
+    return
+    {
+        saturate(e.pressure + e.dPressureDGap*(gap - extensionGap)),
+        e.dPressureDGap
+    };
+}
+
+
 double barrierGapForPressure
 (
     const double pressure,

@@ -136,7 +136,11 @@ bool Foam::contactStateReporter::multipliersConverged
 }
 
 
-Foam::scalar Foam::contactStateReporter::stepLimit(volVectorField& D)
+Foam::scalar Foam::contactStateReporter::stepLimit
+(
+    volVectorField& D,
+    const bool newtonStep
+)
 {
     scalar alpha = 1;
     forEachReporter<contactStateReporter>
@@ -144,7 +148,7 @@ Foam::scalar Foam::contactStateReporter::stepLimit(volVectorField& D)
         D.boundaryFieldRef(),
         [&](contactStateReporter& rep, const label)
         {
-            alpha = min(rep.stepLimit(), alpha);
+            alpha = min(rep.stepLimit(newtonStep), alpha);
         }
     );
     return alpha;

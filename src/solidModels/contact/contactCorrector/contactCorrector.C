@@ -681,7 +681,8 @@ Foam::scalar Foam::contactCorrector::stepLimit
 (
     const fvPatchVectorField& slave,
     const fvPatchVectorField* master,
-    const contactHistory& h
+    const contactHistory& h,
+    const bool newtonStep
 )
 {
     // The method is the same on every processor, so all take this branch
@@ -698,7 +699,10 @@ Foam::scalar Foam::contactCorrector::stepLimit
 
     const scalar alpha = returnReduce
     (
-        h.method().stepLimit(lastState_, pair_->gap(), pair_->inRange()),
+        h.method().stepLimit
+        (
+            lastState_, pair_->gap(), pair_->inRange(), newtonStep
+        ),
         minOp<scalar>()
     );
 

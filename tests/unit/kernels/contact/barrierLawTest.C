@@ -468,3 +468,110 @@ TEST(barrierLaw, newtonWithLimiterSolvesASpringInSeries)
         }
     }
 }
+
+TEST(barrierLaw, extensionIsTheBarrierAboveAndItsTangentBelow)
+{
+    const double dh = 1e-4, kappa = 1e7;
+    for (const double f : {1e-6, 1e-4, 1e-2, 0.5})
+    {
+        const double gE = f*dh;
+        const NormalLawValue e = barrierPressure(gE, dh, kappa);
+        // Above gE (and beyond dhat) the barrier itself, bit for bit
+        for (const double g : {gE, 1.5*gE, 0.7*dh, dh, 2*dh})
+        {
+            const NormalLawValue a = barrierPressureExtended(g, dh, kappa, gE);
+            const NormalLawValue b = barrierPressure(g, dh, kappa);
+            EXPECT_EQ(a.pressure, b.pressure) << f << " " << g;
+            EXPECT_EQ(a.dPressureDGap, b.dPressureDGap) << f << " " << g;
+        }
+        // Below: the tangent line at gE, through g = 0 and far beyond
+        double last = e.pressure;
+        for (const double g : {0.999*gE, 0.5*gE, 0.0, -gE, -dh, -1.0})
+        {
+            const NormalLawValue a = barrierPressureExtended(g, dh, kappa, gE);
+            EXPECT_TRUE(std::isfinite(a.pressure)) << f << " " << g;
+            EXPECT_EQ(a.dPressureDGap, e.dPressureDGap) << f << " " << g;
+            EXPECT_NEAR
+            (
+                a.pressure, e.pressure + e.dPressureDGap*(g - gE),
+                4*DBL_EPSILON*std::abs(e.pressure + e.dPressureDGap*(g - gE))
+            ) << f << " " << g;
+            EXPECT_GT(a.pressure, last) << f << " " << g;
+            last = a.pressure;
+        }
+        // C1 at gE: the one-sided difference quotients on either side
+        // agree with the slope there (the law's curvature bounds the
+        // truncation on the barrier's side)
+        const double h = 1e-6*gE;
+        const double pE = e.pressure;
+        const double below =
+            (pE - barrierPressureExtended(gE - h, dh, kappa, gE).pressure)/h;
+        const double above =
+            (barrierPressureExtended(gE + h, dh, kappa, gE).pressure - pE)/h;
+        const double s = std::abs(e.dPressureDGap);
+        EXPECT_NEAR(below, e.dPressureDGap, 1e-6*s) << f;
+        EXPECT_NEAR(above, e.dPressureDGap, 1e-5*s) << f;
+    }
+    // NaN: saturated like the barrier, never NaN
+    const NormalLawValue n =
+        barrierPressureExtended(std::nan(""), dh, kappa, 1e-4*dh);
+    EXPECT_FALSE(std::isnan(n.pressure));
+    EXPECT_FALSE(std::isnan(n.dPressureDGap));
+}
+
+TEST(barrierLaw, newtonOnTheExtensionSolvesASpringInSeriesUnlimited)
+{
+    // The column of newtonWithLimiterSolvesASpringInSeries without the
+    // limiter: Newton on the extended law from gaps the solve may take
+    // through zero (an approach far beyond the barrier's range in one
+    // step) reaches the law's root, the barrier's own above the
+    // extension gap
+    const double dh = 1e-4, kappa = 1e7, gE = 1e-4*dh;
+    for (const double k : {1e5, 1e7, 1e9})
+    {
+        for (const double g0 : {0.5*dh, 2*dh, 1e-2})
+        {
+            for (const double A : {1e-3, 1e-2, 1e-1})
+            {
+                double g = g0;
+                int it = 0;
+                double res = 1;
+                for (; it < 200 && res > 1e-13; ++it)
+                {
+                    const LinearizedNormalLaw lin = linearizeNormalLaw
+                    (
+                        barrierPressureExtended(g, dh, kappa, gE), g
+                    );
+                    const double gNew =
+                        lin.coupled
+                      ? (lin.pressure0 - k*(A - g0))/(k + 1/lin.compliance)
+                      : (lin.pressure0 - k*(A - g0))/k;
+                    res = std::abs(gNew - g)/dh;
+                    g = gNew;
+                }
+                EXPECT_LT(it, 200) << "k " << k << " g0 " << g0 << " A " << A;
+                if (A < g0 - dh)
+                {
+                    EXPECT_NEAR(g, g0 - A, 1e-12*g0);
+                }
+                else
+                {
+                    // The extended law's root: the barrier's where the
+                    // column's pressure at gE is below the law's there
+                    // (both monotone in g); only the stiffest column
+                    // pushed furthest (k A = 1e8 Pa against about
+                    // kappa dhat^2/gE = 1e7 Pa) ends on the extension,
+                    // where the method doubles kappa
+                    const double p =
+                        barrierPressureExtended(g, dh, kappa, gE).pressure;
+                    EXPECT_LT(g, dh);
+                    EXPECT_NEAR(p, k*(A - g0 + g), 1e-9*p) << "k " << k << " g0 " << g0;
+                    const bool onBarrier =
+                        k*(A - g0 + gE) < barrierPressure(gE, dh, kappa).pressure;
+                    EXPECT_EQ(g > gE, onBarrier) << "k " << k << " g0 " << g0 << " A " << A;
+                    EXPECT_EQ(onBarrier, !(k == 1e9 && A == 1e-1));
+                }
+            }
+        }
+    }
+}

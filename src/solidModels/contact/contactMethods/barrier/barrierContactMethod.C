@@ -26,9 +26,9 @@ Foam::contactMethods::barrier::typeTraits
     true,  // openStart
     true,  // allowsSlip
     contactMethodTraits::multiplierKind::none,
-    false,  // finiteStrain
+    true,  // finiteStrain
     "dhatScale 1e-3; kappaScale 1; stepFraction 0.2; gapFloor 0.01;"
-    " maxKappaFactor 100; lawTolerance 1e-6;"
+    " extensionScale 1e-4; maxKappaFactor 100; lawTolerance 1e-6;"
 };
 
 
@@ -65,6 +65,7 @@ Foam::contactMethods::barrier::barrier
     kappaScale_(coeffs.get<scalar>("kappaScale")),
     stepFraction_(coeffs.get<scalar>("stepFraction")),
     gapFloor_(coeffs.get<scalar>("gapFloor")),
+    extensionScale_(coeffs.get<scalar>("extensionScale")),
     maxKappaFactor_(coeffs.get<scalar>("maxKappaFactor")),
     lawTolerance_(coeffs.get<scalar>("lawTolerance")),
     started_(false),
@@ -130,6 +131,20 @@ Foam::contactMethods::barrier::barrier
             "gapFloor", gapFloor_,
             c4f::contact::describeBarrierFractionRequirement()
           + " (of dhat)"
+        );
+    }
+    if
+    (
+        !c4f::contact::validBarrierFraction(extensionScale_)
+     || !(extensionScale_ < gapFloor_)
+    )
+    {
+        invalid
+        (
+            "extensionScale", extensionScale_,
+            c4f::contact::describeBarrierFractionRequirement()
+          + " (of dhat) and below gapFloor (" + std::to_string(gapFloor_)
+          + "), which the answer's gaps lie above; 1e-4 is usual"
         );
     }
     if (!c4f::contact::validBarrierFraction(lawTolerance_))
@@ -206,8 +221,9 @@ void Foam::contactMethods::barrier::correct
         }
     }
 
-    // Every gap in range must be open: at the start an input error; later
-    // the step limiter has failed, which must not go unnoticed either
+    // Every gap in range must be open at the start (an input error). Later
+    // an iterate may cross g = 0: the law's extension pushes it back, and
+    // a converged state below the extension is not taken (updateMultipliers)
     label nClosed = 0;
     scalar worst = GREAT;
     forAll(state.gap, facei)
@@ -220,7 +236,7 @@ void Foam::contactMethods::barrier::correct
     }
     reduce(nClosed, sumOp<label>());
     reduce(worst, minOp<scalar>());
-    if (nClosed)
+    if (nClosed && !started_)
     {
         const label nInRange =
             returnReduce
@@ -228,27 +244,16 @@ void Foam::contactMethods::barrier::correct
                 label(std::count(state.inRange.begin(), state.inRange.end(), true)),
                 sumOp<label>()
             );
-        if (!started_)
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "The barrier method needs an open start, but contact"
-                << " patch " << patch_.name() << " (" << coeffs_.name()
-                << ") touches or penetrates its master: " << nClosed
-                << " of its " << nInRange << " faces in range have"
-                << " g_N <= 0, the worst g_N = " << worst << " m. Every"
-                << " gap must be > 0 (and best below dhat = " << dhat_
-                << " m for a smooth first step): open a gap between the"
-                << " bodies, e.g. an initial displacement of one body"
-                << " (the tutorials' Allrun -gap)" << exit(FatalIOError);
-        }
         FatalIOErrorInFunction(coeffs_)
-            << "Contact patch " << patch_.name() << " (" << coeffs_.name()
-            << "): " << nClosed << " of its " << nInRange << " faces in"
-            << " range reached g_N <= 0 (worst " << worst << " m) although"
-            << " every update was limited to keep the gaps at stepFraction "
-            << stepFraction_ << " of their value; the geometry changed"
-            << " too nonlinearly along the step (try a smaller"
-            << " stepFraction, or smaller load steps)" << exit(FatalIOError);
+            << "The barrier method needs an open start, but contact"
+            << " patch " << patch_.name() << " (" << coeffs_.name()
+            << ") touches or penetrates its master: " << nClosed
+            << " of its " << nInRange << " faces in range have"
+            << " g_N <= 0, the worst g_N = " << worst << " m. Every"
+            << " gap must be > 0 (and best below dhat = " << dhat_
+            << " m for a smooth first step): open a gap between the"
+            << " bodies, e.g. an initial displacement of one body"
+            << " (the tutorials' Allrun -gap)" << exit(FatalIOError);
     }
 
     const scalar minG = minGap(state);
@@ -287,7 +292,10 @@ void Foam::contactMethods::barrier::correct
             const c4f::contact::LinearizedNormalLaw lin =
                 c4f::contact::linearizeNormalLaw
                 (
-                    c4f::contact::barrierPressure(gStar, dhat_, k[facei]),
+                    c4f::contact::barrierPressureExtended
+                    (
+                        gStar, dhat_, k[facei], extensionScale_*dhat_
+                    ),
                     gStar
                 );
             cond.coupled[facei] = lin.coupled;
@@ -322,11 +330,29 @@ bool Foam::contactMethods::barrier::updateMultipliers
     }
     reduce(belowCap, orOp<bool>());
 
+    // A state on the law's extension is not the barrier's answer: the
+    // barrier, stiffer, must hold the faces further apart
+    const bool onExtension = minG < extensionScale_*dhat_;
+    if (onExtension && !belowCap)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Contact patch " << patch_.name() << " (" << coeffs_.name()
+            << "): the converged state has a gap of " << minG << " m,"
+            << " below the barrier's extension (extensionScale "
+            << extensionScale_ << " of dhat = " << dhat_ << " m), with kappa"
+            << " at maxKappaFactor " << maxKappaFactor_ << " times its"
+            << " initial value: the barrier cannot carry the load there."
+            << " Raise maxKappaFactor or kappaScale (or dhat)"
+            << exit(FatalIOError);
+    }
     const bool increase =
         belowCap
-     && c4f::contact::barrierStiffnessShouldIncrease
-        (
-            previousMinGap_, minG, gapFloor_*dhat_
+     && (
+            onExtension
+         || c4f::contact::barrierStiffnessShouldIncrease
+            (
+                previousMinGap_, minG, gapFloor_*dhat_
+            )
         );
 
     Info<< "    contact " << patch_.name() << ": barrier stiffness update "
@@ -373,9 +399,9 @@ bool Foam::contactMethods::barrier::lawConverged
         if (state.inRange[facei] && state.gap[facei] < dhat_)
         {
             const scalar p =
-                c4f::contact::barrierPressure
+                c4f::contact::barrierPressureExtended
                 (
-                    state.gap[facei], dhat_, k[facei]
+                    state.gap[facei], dhat_, k[facei], extensionScale_*dhat_
                 ).pressure;
             worst = max(worst, mag(p - pressure[facei]));
             pMax = max(pMax, mag(pressure[facei]));
@@ -391,7 +417,8 @@ Foam::scalar Foam::contactMethods::barrier::stepLimit
 (
     const contactSlaveState& before,
     const scalarField& gapAfter,
-    const boolList& inRangeAfter
+    const boolList& inRangeAfter,
+    const bool newtonStep
 ) const
 {
     // An update is limited when a gap would fall below half its fraction;
@@ -404,6 +431,13 @@ Foam::scalar Foam::contactMethods::barrier::stepLimit
     {
         if (!inRangeAfter[facei])
         {
+            continue;
+        }
+        if (before.inRange[facei] && before.gap[facei] < dhat_ && !newtonStep)
+        {
+            // Coupled by the law's tangent in the corrector's solve: the
+            // extension takes a gap the solve misjudged (limiting the
+            // whole update for it stalled every face, docs/methods.md)
             continue;
         }
         if (before.inRange[facei])
