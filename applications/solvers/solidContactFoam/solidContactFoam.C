@@ -111,7 +111,7 @@ Description
     load step starts with segregated correctors (`acceleration`, full
     solves: the load increment and the contact decisions it causes) until
     one leaves the contact state unchanged, at most maxSegregatedStart of
-    them, but with the barrier. A step that has not converged in
+    them. A step that has not converged in
     maxNewtonSteps Newton steps goes on with the segregated correctors.
 
     At the fixed point the split leaves div(sigma) plus the smoothing term
@@ -293,13 +293,8 @@ int main(int argc, char *argv[])
     newtonKrylovCorrector newtonLoop(solidControls, D);
 
     // Whether this corrector is Newton's: newtonKrylovCorrector decides
-    // (the segregated start until the contact state settles, Newton from
-    // the first corrector with a method that limits the updates, the
+    // (the segregated start until the contact state settles, the
     // segregated correctors after maxNewtonSteps; its header says why)
-    if (newton && contactStateReporter::limitsSteps(D))
-    {
-        newtonLoop.startWithNewton();
-    }
     bool newtonNow = false;
     label nSegregated = 0;
 

@@ -78,7 +78,6 @@ Foam::newtonKrylovCorrector::newtonKrylovCorrector
     maxNewtonSteps_(50),
     maxStalledSteps_(8),
     maxSegregatedStart_(30),
-    fromStart_(false),
     nStart_(0),
     settled_(false),
     substituted_(false),
