@@ -69,9 +69,11 @@ patch test for every method (correctors, stress error); markdown in
 friction.md, q's RMS against the faces across a in friction.png.
 
 Finite deformation (`run.py --only finiteStrain`, issue 22):
-finiteStrainCylinder's force on its mesh and at -refine 2 against a
-CalculiX curve made in this run (validation/calculix.py; the stored one without ccx),
-and finiteStrainPatchTest's correctors for nu 0.3, 0.4 and 0.45.
+finiteStrainCylinder's force on its mesh (the Lagrange multiplier and the
+barrier) and at -refine 2 against a CalculiX curve made in this run
+(validation/calculix.py; the stored one without ccx), and
+finiteStrainPatchTest's correctors for nu 0.3, 0.4 and 0.45 (and the
+barrier at 0.3).
 
 Large sliding (`run.py --only ironing`, issue 22): shallowIroning at
 -refine 1 and 1.5: the die's forces at t = 1 and 1.5, the friction ratio at
@@ -1526,25 +1528,30 @@ def finite_strain_bench():
     else:
         print("ccx or gmsh not installed: the stored curve "
               "(tutorials/finiteStrainCylinder/validation/calculix-stVenantKirchhoff.csv)")
-    print("%-8s %8s %9s %9s %8s %7s" % ("refine", "cells", "max|dF|", "F(20%)", "corr",
-                                          "wall s"))
-    for level in (1, 2):
-        r = bench_case("finiteStrainCylinder_%d" % level, tut, allrun=["-refine", str(level)])
+    print("%-8s %-19s %8s %9s %9s %8s %7s" % ("refine", "method", "cells", "max|dF|",
+                                               "F(20%)", "corr", "wall s"))
+    # The barrier (dhat 1e-2 h from the tutorial's 0/D, its open start by
+    # Allrun) beside the Lagrange multiplier on the default mesh
+    for level, method in ((1, "lagrangeMultiplier"), (1, "barrier"),
+                          (2, "lagrangeMultiplier")):
+        r = bench_case("finiteStrainCylinder_%d_%s" % (level, method), tut,
+                       allrun=["-refine", str(level), "-method", method])
         if not r["converged"]:
-            print("%-8d did not converge (rc=%d)" % (level, r["rc"]))
+            print("%-8d %-19s did not converge (rc=%d)" % (level, method, r["rc"]))
             continue
         res = compare.compare(r["case"], ref)
         cells = len(foamio.cell_centres_volumes(r["case"])[1])
-        print("%-8d %8d %8.3f%% %9.4g %8d %7.1f" % (
-            level, cells, 100 * max(abs(x) for x in res["rel"]), res["F"][-1], r["ncorr"],
-            r["wall"]))
-    print("\nfiniteStrainPatchTest (lagrangeMultiplier, 80 % in one step)")
-    for nu in ("0.3", "0.4", "0.45"):
-        r = bench_case("finiteStrainPatchTest_nu%s" % nu,
+        print("%-8d %-19s %8d %8.3f%% %9.4g %8d %7.1f" % (
+            level, method, cells, 100 * max(abs(x) for x in res["rel"]), res["F"][-1],
+            r["ncorr"], r["wall"]))
+    print("\nfiniteStrainPatchTest (80 % in one step)")
+    for nu, method in (("0.3", "lagrangeMultiplier"), ("0.4", "lagrangeMultiplier"),
+                       ("0.45", "lagrangeMultiplier"), ("0.3", "barrier")):
+        r = bench_case("finiteStrainPatchTest_nu%s_%s" % (nu, method),
                        os.path.join(ROOT, "tutorials", "finiteStrainPatchTest"),
-                       allrun=["-nu", nu])
-        print("nu %-5s converged %-3s correctors %s" % (
-            nu, "yes" if r["converged"] else "no", r["ncorr"]))
+                       allrun=["-nu", nu, "-method", method])
+        print("nu %-5s %-19s converged %-3s correctors %s" % (
+            nu, method, "yes" if r["converged"] else "no", r["ncorr"]))
 
 
 def ironing_contact_free(r):
