@@ -68,6 +68,25 @@ def test_barrier_kappa_doubles_and_converges(method):
     ck.verify()
 
 
+@pytest.mark.parametrize("method", methods_where(answer="barrier"))
+def test_barrier_answer_below_its_extension_stops(method):
+    """kappaScale 1e-6 with maxKappaFactor 1: the load needs a gap far below
+    the law's extension (extensionScale dhat), where the law is no longer
+    the barrier's, and kappa may not double: a FatalIOError naming the gap,
+    the extension and maxKappaFactor, and no time written (measured: the
+    converged gap -1.0e-5 m against an extension of 1e-8 m)."""
+    ck = harness.Checks()
+    name = "contactPatchTest_%s_belowExtension" % method
+    case = harness.fresh_copy("contactPatchTest", name)
+    methods.set_coeff(case, method, "kappaScale", "1e-6")
+    methods.set_coeff(case, method, "maxKappaFactor", "1")
+    ok, note = harness.refused(case, ["-method", method],
+                               ["below the barrier's extension", "maxKappaFactor 1",
+                                "%sCoeffs" % method, "lowerTop"])
+    ck.add(name + "/refused", ok, note=note)
+    ck.verify()
+
+
 @pytest.mark.parametrize("method", [pytest.param(m, marks=group(m))
                                     for m in methods_where(answer="constitutive")])
 def test_linear_interface_law_equals_penalty(method):
