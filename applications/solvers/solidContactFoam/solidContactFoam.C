@@ -39,9 +39,11 @@ Description
         (Uzawa), and while they move the correctors go on from the
         converged state; a method that reaches its maximum number of
         updates unconverged fails the step.
-    A contact method that keeps every gap positive (barrier) limits each
+    A contact method that keeps its gaps open (barrier) limits each
     corrector's update of D, after the solve and after Anderson's step
-    (which can penetrate too): D moves back along the update to
+    (which can penetrate too; the barrier where a face out of its range
+    would close, every face in a Newton step): D moves back along the
+    update to
     x_k + alpha (x_k+1 - x_k) until the method admits the gaps it measures
     there (contactStateReporter::stepLimit, outerCorrectorAcceleration::
     scaleStep).
