@@ -339,10 +339,11 @@ class Checks:
         self.add("%s/foamToVTK_fields" % name, not missing,
                  note="missing: %s" % missing if missing else "(%s)" % ", ".join(fields))
 
-    def barrier_gaps_open(self, case, name, extension_scale=1e-4):
+    def barrier_gaps_open(self, case, name):
         """The barrier's answer keeps every gap open, above the law's
-        extension (extensionScale dhat, dhat from the log's 'barrier dhat =
-        d m' line): the step summaries' minGap. An iterate of the
+        extension (extensionScale dhat: the case's entry or the method's
+        default, dhat from the log's 'barrier dhat = d m' line): the step
+        summaries' minGap. An iterate of the
         segregated correctors may cross g = 0 at a face the law couples
         (the extension pushes it back); with verbose output every corrector
         prints the smallest gap of the iterate it starts from ('contact
@@ -353,7 +354,8 @@ class Checks:
                                              text, flags=re.M)]
         final = [_gap(g) for g in re.findall(r"^Time = .*minGap = (\S+)", text, flags=re.M)]
         dhat = [float(d) for d in re.findall(r"barrier dhat = (\S+) m", text)]
-        floor = extension_scale * min(dhat) if dhat else float("inf")
+        floor = (methods.coeff(case, "barrier", "extensionScale") * min(dhat)
+                 if dhat else float("inf"))
         ncorr = total_correctors(case)
         ok = bool(gaps) and len(gaps) == ncorr and bool(final) and min(final) > floor
         self.add("%s/min_gap_above_extension_converged" % name, ok,

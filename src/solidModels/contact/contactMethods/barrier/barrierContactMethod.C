@@ -51,6 +51,45 @@ Foam::scalar Foam::contactMethods::barrier::minGap
 }
 
 
+void Foam::contactMethods::barrier::checkOpenStart
+(
+    const contactSlaveState& state
+) const
+{
+    label nClosed = 0;
+    scalar worst = GREAT;
+    forAll(state.gap, facei)
+    {
+        if (state.inRange[facei] && !(state.gap[facei] > 0))
+        {
+            ++nClosed;
+            worst = min(worst, state.gap[facei]);
+        }
+    }
+    reduce(nClosed, sumOp<label>());
+    reduce(worst, minOp<scalar>());
+    if (nClosed)
+    {
+        const label nInRange =
+            returnReduce
+            (
+                label(std::count(state.inRange.begin(), state.inRange.end(), true)),
+                sumOp<label>()
+            );
+        FatalIOErrorInFunction(coeffs_)
+            << "The barrier method needs an open start, but contact"
+            << " patch " << patch_.name() << " (" << coeffs_.name()
+            << ") touches or penetrates its master: " << nClosed
+            << " of its " << nInRange << " faces in range have"
+            << " g_N <= 0, the worst g_N = " << worst << " m. Every"
+            << " gap must be > 0 (and best below dhat = " << dhat_
+            << " m for a smooth first step): open a gap between the"
+            << " bodies, e.g. an initial displacement of one body"
+            << " (the tutorials' Allrun -gap)" << exit(FatalIOError);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactMethods::barrier::barrier
@@ -224,36 +263,9 @@ void Foam::contactMethods::barrier::correct
     // Every gap in range must be open at the start (an input error). Later
     // an iterate may cross g = 0: the law's extension pushes it back, and
     // a converged state below the extension is not taken (updateMultipliers)
-    label nClosed = 0;
-    scalar worst = GREAT;
-    forAll(state.gap, facei)
+    if (!started_)
     {
-        if (state.inRange[facei] && !(state.gap[facei] > 0))
-        {
-            ++nClosed;
-            worst = min(worst, state.gap[facei]);
-        }
-    }
-    reduce(nClosed, sumOp<label>());
-    reduce(worst, minOp<scalar>());
-    if (nClosed && !started_)
-    {
-        const label nInRange =
-            returnReduce
-            (
-                label(std::count(state.inRange.begin(), state.inRange.end(), true)),
-                sumOp<label>()
-            );
-        FatalIOErrorInFunction(coeffs_)
-            << "The barrier method needs an open start, but contact"
-            << " patch " << patch_.name() << " (" << coeffs_.name()
-            << ") touches or penetrates its master: " << nClosed
-            << " of its " << nInRange << " faces in range have"
-            << " g_N <= 0, the worst g_N = " << worst << " m. Every"
-            << " gap must be > 0 (and best below dhat = " << dhat_
-            << " m for a smooth first step): open a gap between the"
-            << " bodies, e.g. an initial displacement of one body"
-            << " (the tutorials' Allrun -gap)" << exit(FatalIOError);
+        checkOpenStart(state);
     }
 
     const scalar minG = minGap(state);
@@ -294,7 +306,7 @@ void Foam::contactMethods::barrier::correct
                 (
                     c4f::contact::barrierPressureExtended
                     (
-                        gStar, dhat_, k[facei], extensionScale_*dhat_
+                        gStar, dhat_, k[facei], extensionGap()
                     ),
                     gStar
                 );
@@ -332,7 +344,7 @@ bool Foam::contactMethods::barrier::updateMultipliers
 
     // A state on the law's extension is not the barrier's answer: the
     // barrier, stiffer, must hold the faces further apart
-    const bool onExtension = minG < extensionScale_*dhat_;
+    const bool onExtension = minG < extensionGap();
     if (onExtension && !belowCap)
     {
         FatalIOErrorInFunction(coeffs_)
@@ -401,7 +413,7 @@ bool Foam::contactMethods::barrier::lawConverged
             const scalar p =
                 c4f::contact::barrierPressureExtended
                 (
-                    state.gap[facei], dhat_, k[facei], extensionScale_*dhat_
+                    state.gap[facei], dhat_, k[facei], extensionGap()
                 ).pressure;
             worst = max(worst, mag(p - pressure[facei]));
             pMax = max(pMax, mag(pressure[facei]));
